@@ -1,0 +1,23 @@
+// accsim: one binary, one subcommand per pipeline stage.
+#include <exception>
+#include <iostream>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"accsim: crash reports reconstructed as physically simulated RL scenarios"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "accsim 0.1.0");
+  accsim::cli::AddSimulateCommand(app);
+  accsim::cli::AddBenchCommand(app);
+  accsim::cli::AddExtractCommands(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,73 @@
+#include "accsim/policies/rule_based.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace accsim {
+namespace {
+
+float SpeedKeeping(const CrashEnv& env, double target) {
+  const VehicleState& s = env.world().state(0);
+  const VehicleParams& p = env.world().params(0);
+  const double err = target - s.forward_speed();
+  // Proportional control with a 0.5 s time constant, in action units.
+  const double accel = err / 0.5;
+  const double a = accel >= 0 ? accel / p.max_accel : accel / p.max_brake;
+  return static_cast<float>(std::clamp(a, -1.0, 1.0));
+}
+
+}  // namespace
+
+float RouteSteering(const CrashEnv& env) {
+  const VehicleState& s = env.world().state(0);
+  const VehicleParams& p = env.world().params(0);
+  const Polyline& route = env.route();
+  const double speed = std::max(0.0, s.forward_speed());
+  const double lookahead = std::clamp(4.0 + 0.6 * speed, 4.0, 25.0);
+  const auto proj = route.Project(s.pose.position(), env.route_s());
+  Vec2 target = route.PointAt(proj.s + lookahead);
+  // Past the end of the route, keep going straight along its last heading.
+  const double beyond = proj.s + lookahead - route.length();
+  if (beyond > 0) {
+    const double h = route.HeadingAt(route.length());
+    target += beyond * Vec2(std::cos(h), std::sin(h));
+  }
+  const Vec2 local = ToLocal(target - s.pose.position(), s.pose.yaw);
+  const double ld2 = std::max(1e-6, local.squaredNorm());
+  const double curvature = 2.0 * local.y() / ld2;
+  const double steer = std::atan(curvature * p.wheelbase);
+  return static_cast<float>(std::clamp(steer / p.max_steer, -1.0, 1.0));
+}
+
+Action HoldPolicy(const CrashEnv& env) {
+  return {SpeedKeeping(env, env.scenario().ego.target_speed), RouteSteering(env)};
+}
+
+Action BrakePolicy(const CrashEnv& env, double onset) {
+  if (env.time() + 1e-9 < onset) return HoldPolicy(env);
+  return {-1.0f, RouteSteering(env)};
+}
+
+Action RuleBasedPolicy(const CrashEnv& env, double horizon) {
+  const World& w = env.world();
+  const VehicleState& e = w.state(0);
+  const Polyline& route = env.route();
+  const double speed = std::max(0.0, e.forward_speed());
+  const double ego_radius = w.params(0).length / 2.0;
+  const double ego_s = env.route_s();
+  // Sample the next `horizon` seconds every 0.25 s: ego along its route at
+  // its current speed, others at constant velocity.
+  for (double t = 0.25; t <= horizon + 1e-9; t += 0.25) {
+    const Vec2 ego_at = route.PointAt(ego_s + speed * t);
+    for (int i = 1; i < w.num_vehicles(); ++i) {
+      const VehicleState& o = w.state(i);
+      const Vec2 other_at = o.pose.position() + o.velocity * t;
+      const double gap = (other_at - ego_at).norm();
+      const double radius = ego_radius + w.params(i).length / 2.0 + 1.0;
+      if (gap < radius) return {-1.0f, RouteSteering(env)};
+    }
+  }
+  return HoldPolicy(env);
+}
+
+}  // namespace accsim
