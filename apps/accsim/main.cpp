@@ -10,7 +10,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "accsim 0.1.0");
   accsim::cli::AddSimulateCommand(app);
   accsim::cli::AddBenchCommand(app);
+#ifdef ACCSIM_HAVE_EXTRACT
   accsim::cli::AddExtractCommands(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -212,6 +212,14 @@ void CrashEnv::Step(const float* action, size_t size) {
     watch.Lap(profile_.npc_control);
   }
 
+  // The ego's collision impulse: everything exchanged with that vehicle
+  // since first touch, not just the first substep's share.
+  if (info_.ego_collision) {
+    for (const ContactEvent& e : world_->contact_log()) {
+      if (e.body_a == 0 && e.body_b == info_.ego_collision->other) info_.ego_collision->impulse = e.impulse;
+    }
+  }
+
   // Reward terms and termination.
   auto& terms = info_.reward_terms;
   terms.fill(0.0);
@@ -259,25 +267,39 @@ void CrashEnv::Step(const float* action, size_t size) {
 }
 
 double CrashEnv::MinTimeToCollision() const {
-  // Constant-velocity time to collision with each vehicle, treating both as
-  // discs whose radius is half their width (a conservative lateral gap).
-  const VehicleState& e = world_->state(0);
-  const double re = world_->params(0).width / 2.0 + world_->params(0).length / 4.0;
+  // Time until the ego's and each other vehicle's footprints (oriented
+  // boxes) first overlap if both keep their current velocity: on each of the
+  // four separating axes the overlap is a time interval; the boxes overlap
+  // where all four intervals do.
+  const World& w = *world_;
+  const VehicleState& e = w.state(0);
+  const VehicleParams& ep = w.params(0);
   double best = std::numeric_limits<double>::infinity();
-  for (int i = 1; i < world_->num_vehicles(); ++i) {
-    const VehicleState& o = world_->state(i);
-    const double r = re + world_->params(i).width / 2.0 + world_->params(i).length / 4.0;
-    const Vec2 dp = o.pose.position() - e.pose.position();
-    const Vec2 dv = o.velocity - e.velocity;
-    const double a = dv.squaredNorm();
-    const double b = 2.0 * dp.dot(dv);
-    const double c = dp.squaredNorm() - r * r;
-    if (c <= 0.0) return 0.0;
-    if (a <= 1e-12 || b >= 0.0) continue;
-    const double disc = b * b - 4 * a * c;
-    if (disc < 0.0) continue;
-    const double t = (-b - std::sqrt(disc)) / (2 * a);
-    if (t >= 0.0 && t < kTtcHorizon) best = std::min(best, t);
+  for (int i = 1; i < w.num_vehicles(); ++i) {
+    const VehicleState& o = w.state(i);
+    const VehicleParams& op = w.params(i);
+    const Vec2 d = o.pose.position() - e.pose.position();
+    const Vec2 vel = o.velocity - e.velocity;
+    const Vec2 ue(std::cos(e.pose.yaw), std::sin(e.pose.yaw)), ve(-ue.y(), ue.x());
+    const Vec2 uo(std::cos(o.pose.yaw), std::sin(o.pose.yaw)), vo(-uo.y(), uo.x());
+    double enter = -std::numeric_limits<double>::infinity();
+    double exit = std::numeric_limits<double>::infinity();
+    for (const Vec2& n : {ue, ve, uo, vo}) {
+      const double r = ep.length / 2 * std::abs(n.dot(ue)) + ep.width / 2 * std::abs(n.dot(ve)) +
+                       op.length / 2 * std::abs(n.dot(uo)) + op.width / 2 * std::abs(n.dot(vo));
+      const double p = n.dot(d), q = n.dot(vel);
+      if (std::abs(q) < 1e-12) {
+        if (std::abs(p) >= r) {
+          enter = std::numeric_limits<double>::infinity();
+          break;
+        }
+        continue;
+      }
+      const double t1 = (-r - p) / q, t2 = (r - p) / q;
+      enter = std::max(enter, std::min(t1, t2));
+      exit = std::min(exit, std::max(t1, t2));
+    }
+    if (enter <= exit && exit >= 0.0 && enter < kTtcHorizon) best = std::min(best, std::max(0.0, enter));
   }
   return best;
 }

@@ -200,7 +200,7 @@ void World::Step() {
   ReadStates();
   pre_step_states_ = states_;
   bullet_->world.stepSimulation(dt, 0, dt);
-  time_ += dt;
+  time_ = static_cast<double>(++substeps_) * dt;
   ReadStates();
   ScanContacts();
 }

@@ -112,7 +112,7 @@ struct CollisionInfo {
   int other = -1;               // vehicle index (0 = ego)
   std::string other_id;
   Vec2 point = Vec2::Zero();    // [m]
-  double impulse = 0.0;         // [N s] in the first substep
+  double impulse = 0.0;         // [N s] normal impulse exchanged since first touch (to the step's end)
   double relative_speed = 0.0;  // [m/s]
   double closing_speed = 0.0;   // [m/s]
 };

@@ -118,6 +118,7 @@ class World {
   std::vector<ContactEvent> new_contacts_;
   std::vector<ContactEvent> contact_log_;
   double time_ = 0.0;
+  long substeps_ = 0;  // time_ = substeps_ * physics_dt, free of summation drift
 };
 
 }  // namespace accsim

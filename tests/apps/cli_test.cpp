@@ -1,0 +1,112 @@
+// The accsim CLI end to end, run as a user runs it.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string out;  // stdout and stderr
+};
+
+Result RunCli(const std::string& args) {
+  Result r;
+  const std::string cmd = std::string(ACCSIM_CLI_PATH) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(p);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string Example(const std::string& family) {
+  return std::string(ACCSIM_SOURCE_DIR) + "/scenarios/examples/" + family + ".json";
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class CliExampleTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CliExampleTest, HoldCollidesAndBrakeDoesNot) {
+  const Result hold = RunCli("simulate " + Example(GetParam()) + " --ego hold --json");
+  ASSERT_EQ(hold.status, 0) << hold.out;
+  const auto h = nlohmann::json::parse(hold.out);
+  EXPECT_TRUE(h["collision"].get<bool>());
+  EXPECT_GT(h["time"].get<double>(), 0.0);
+  EXPECT_EQ(h["bodies"].size(), 2u);
+  EXPECT_GT(h["impulse"].get<double>(), 0.0);
+  EXPECT_GT(h["relative_speed"].get<double>(), 0.0);
+
+  const Result brake = RunCli("simulate " + Example(GetParam()) + " --ego brake --json");
+  ASSERT_EQ(brake.status, 0) << brake.out;
+  EXPECT_FALSE(nlohmann::json::parse(brake.out)["collision"].get<bool>());
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, CliExampleTest,
+                         ::testing::Values("straight_obstacle", "unprotected_left_turn", "right_turn",
+                                           "lane_changing"));
+
+TEST(CliTest, SavedTrajectoriesAreByteIdentical) {
+  const std::string a = ::testing::TempDir() + "/traj_a.json", b = ::testing::TempDir() + "/traj_b.json";
+  ASSERT_EQ(RunCli("simulate " + Example("lane_changing") + " --ego rule --out " + a).status, 0);
+  ASSERT_EQ(RunCli("simulate " + Example("lane_changing") + " --ego rule --out " + b).status, 0);
+  const std::string ta = ReadFile(a);
+  EXPECT_GT(ta.size(), 1000u);
+  EXPECT_EQ(ta, ReadFile(b));
+  const auto j = nlohmann::json::parse(ta);
+  EXPECT_EQ(j["vehicles"].size(), 4u);
+}
+
+TEST(CliTest, BadInputGetsAClearErrorAndExitCode) {
+  const std::string bad = ::testing::TempDir() + "/bad.json";
+  std::ofstream(bad) << "{\"schema_version\": 1, \"family\": \"lane_changing\"}";
+  Result r = RunCli("simulate " + bad);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("error: " + bad + ": map: missing required field"), std::string::npos) << r.out;
+
+  std::ofstream(bad) << "not json";
+  r = RunCli("simulate " + bad);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("malformed JSON"), std::string::npos) << r.out;
+
+  r = RunCli("simulate " + Example("lane_changing") + " --ego sideways");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--ego"), std::string::npos) << r.out;
+
+  r = RunCli("simulate /no/such/file.json");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("/no/such/file.json"), std::string::npos) << r.out;
+}
+
+TEST(CliTest, HelpListsSubcommands) {
+  const Result r = RunCli("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("simulate"), std::string::npos);
+  EXPECT_NE(r.out.find("bench"), std::string::npos);
+  EXPECT_EQ(RunCli("simulate --help").status, 0);
+}
+
+TEST(CliTest, BenchPrintsJsonWithTheThroughput) {
+  const Result r = RunCli("bench --json --seconds 0.2");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["single_env_steps_per_second"].get<double>(), 0.0);
+  EXPECT_EQ(j["vehicles"].get<int>(), 4);
+}
+
+}  // namespace
