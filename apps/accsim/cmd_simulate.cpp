@@ -7,8 +7,8 @@
 
 #include "accsim/env/crash_env.h"
 #include "accsim/env/scenario.h"
-#include "accsim/policies/rollout.h"
-#include "accsim/policies/rule_based.h"
+#include "accsim/env/rollout.h"
+#include "accsim/env/scripted_drivers.h"
 #include "commands.h"
 
 namespace accsim::cli {

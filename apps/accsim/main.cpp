@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "accsim 0.1.0");
   accsim::cli::AddSimulateCommand(app);
   accsim::cli::AddBenchCommand(app);
+  accsim::cli::AddGenerateSuiteCommand(app);
 #ifdef ACCSIM_HAVE_EXTRACT
   accsim::cli::AddExtractCommands(app);
 #endif

@@ -1,4 +1,4 @@
-#include "accsim/policies/rule_based.h"
+#include "accsim/env/scripted_drivers.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "accsim/policies/rollout.h"
+#include "accsim/env/rollout.h"
 
 #include <cmath>
 #include <limits>
