@@ -3,6 +3,7 @@ find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(yaml-cpp REQUIRED)
 find_package(Threads REQUIRED)
+find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs videoio)
 
 # Bullet in double precision. Debian's BulletConfig-float64.cmake carries
 # relative paths, so the imported target is spelled out here; the float and

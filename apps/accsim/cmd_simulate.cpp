@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "accsim/env/crash_env.h"
+#include "accsim/env/renderer.h"
 #include "accsim/env/scenario.h"
 #include "accsim/env/rollout.h"
 #include "accsim/env/scripted_drivers.h"
@@ -22,6 +23,11 @@ struct SimulateOptions {
   uint64_t seed = 0;
   bool json = false;
   std::string out;
+  std::string video;
+  std::string png;
+  std::string camera = "collision";
+  double after = 2.0;
+  int width = 640, height = 480;
 };
 
 PolicyFn MakeEgoPolicy(const SimulateOptions& o) {
@@ -35,9 +41,46 @@ PolicyFn MakeEgoPolicy(const SimulateOptions& o) {
 
 void RunSimulate(const SimulateOptions& o) {
   auto scenario = std::make_shared<const Scenario>(LoadScenarioFile(o.scenario));
-  const CrashEnvConfig config = o.config.empty() ? CrashEnvConfig{} : LoadCrashEnvConfig(o.config);
+  CrashEnvConfig config = o.config.empty() ? CrashEnvConfig{} : LoadCrashEnvConfig(o.config);
+  const bool rendering = !o.video.empty() || !o.png.empty();
+  EpisodeOptions episode;
+  episode.record = !o.out.empty();
+
+  // The collision camera looks at where the ego is first hit; find that
+  // point with a first, unrendered run (the simulation is deterministic).
+  Vec2 focus = scenario->ego.start.position();
+  if (rendering && o.camera == "collision") {
+    CrashEnv probe(config, {scenario});
+    const EpisodeResult first = RunEpisode(probe, MakeEgoPolicy(o), o.seed, 0);
+    if (first.collision) focus = first.collision->point;
+  }
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<VideoWriter> video;
+  std::vector<uint8_t> frame, collision_frame;
+  if (rendering) {
+    RenderOptions ro;
+    ro.width = o.width;
+    ro.height = o.height;
+    ro.camera = o.camera == "collision" ? CameraMode::kPoint : CameraModeFromString(o.camera);
+    ro.point = focus;
+    renderer = std::make_unique<Renderer>(ro);
+    frame.resize(static_cast<size_t>(o.width) * o.height * 3);
+    if (!o.video.empty()) {
+      video = std::make_unique<VideoWriter>(o.video, 1.0 / MakeEnvSpec(config).policy_dt, o.width, o.height);
+    }
+    // Keep simulating after the ego is hit so the video shows the aftermath.
+    config.terminate_on_collision = false;
+    episode.after_collision = o.after;
+    episode.on_step = [&](const CrashEnv& e) {
+      renderer->Render(e, frame.data());
+      if (video) video->Write(frame.data());
+      if (collision_frame.empty() && e.info().ego_collision) collision_frame = frame;
+    };
+  }
   CrashEnv env(config, {scenario});
-  const EpisodeResult r = RunEpisode(env, MakeEgoPolicy(o), o.seed, 0, !o.out.empty());
+  const EpisodeResult r = RunEpisode(env, MakeEgoPolicy(o), o.seed, 0, episode);
+  if (video) video->Close();
+  if (!o.png.empty()) WritePng(o.png, collision_frame.empty() ? frame.data() : collision_frame.data(), o.width, o.height);
   if (!o.out.empty()) {
     nlohmann::json traj = TrajectoriesJson(r);
     traj["scenario"] = scenario->name;
@@ -71,6 +114,8 @@ void RunSimulate(const SimulateOptions& o) {
   if (std::isfinite(r.min_ttc)) std::printf("min TTC   %.2f s\n", r.min_ttc);
   if (r.npc_contacts > 0) std::printf("other     %d contact(s) between other vehicles\n", r.npc_contacts);
   if (!o.out.empty()) std::printf("saved     %s\n", o.out.c_str());
+  if (!o.video.empty()) std::printf("video     %s\n", o.video.c_str());
+  if (!o.png.empty()) std::printf("image     %s\n", o.png.c_str());
 }
 
 }  // namespace
@@ -95,6 +140,17 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--seed", opts->seed, "Reset seed")->capture_default_str();
   cmd->add_flag("--json", opts->json, "Print the outcome as one JSON object");
   cmd->add_option("--out", opts->out, "Save every vehicle's trajectory to this JSON file");
+  cmd->add_option("--video", opts->video, "Write a top-down video (.mp4), continuing --after seconds past a collision");
+  cmd->add_option("--png", opts->png, "Write a top-down image of the collision (or of the last step)");
+  cmd->add_option("--camera", opts->camera, "Viewpoint: collision (fixed on the impact point), ego (follows it), map (whole map)")
+      ->check(CLI::IsMember({"collision", "ego", "map"}))
+      ->capture_default_str();
+  cmd->add_option("--after", opts->after, "Seconds of video after the ego's collision")
+      ->check(CLI::Range(0.0, 60.0))
+      ->capture_default_str();
+  cmd->add_option("--size", opts->width, "Frame width in pixels (height is 3/4 of it)")
+      ->check(CLI::Range(64, 4096))
+      ->each([opts](const std::string&) { opts->height = opts->width * 3 / 4; });
   cmd->callback([opts] { RunSimulate(*opts); });
 }
 

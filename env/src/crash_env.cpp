@@ -255,7 +255,7 @@ void CrashEnv::Step(const float* action, size_t size) {
   ++info_.episode_steps;
   info_.episode_return += reward_;
 
-  terminated_ = info_.collision || info_.off_road || info_.goal;
+  terminated_ = (info_.collision && config_.terminate_on_collision) || info_.off_road || info_.goal;
   info_.time_limit = world_->time() >= time_limit_ - 1e-9;
   truncated_ = !terminated_ && info_.time_limit;
   needs_reset_ = terminated_ || truncated_;

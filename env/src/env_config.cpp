@@ -82,6 +82,7 @@ CrashEnvConfig CrashEnvConfigFromJson(const nlohmann::json& j) {
   c.post_contact_brake = f.Number("post_contact_brake", 0.0, 1.0, c.post_contact_brake);
   c.start_speed_jitter = f.Number("start_speed_jitter", 0.0, 20.0, c.start_speed_jitter);
   c.npc_time_jitter = f.Number("npc_time_jitter", 0.0, 5.0, c.npc_time_jitter);
+  c.terminate_on_collision = f.Bool("terminate_on_collision", c.terminate_on_collision);
   if (f.Has("reward")) {
     JsonFields r = f.Object("reward");
     auto& w = c.reward;
@@ -110,6 +111,7 @@ nlohmann::json ToJson(const CrashEnvConfig& c) {
           {"post_contact_brake", c.post_contact_brake},
           {"start_speed_jitter", c.start_speed_jitter},
           {"npc_time_jitter", c.npc_time_jitter},
+          {"terminate_on_collision", c.terminate_on_collision},
           {"reward",
            {{"progress", c.reward.progress},
             {"collision", c.reward.collision},

@@ -19,21 +19,32 @@ void Record(const CrashEnv& env, EpisodeResult& r) {
 
 EpisodeResult RunEpisode(CrashEnv& env, const PolicyFn& policy, std::optional<uint64_t> seed,
                          int scenario_index, bool record) {
+  EpisodeOptions o;
+  o.record = record;
+  return RunEpisode(env, policy, seed, scenario_index, o);
+}
+
+EpisodeResult RunEpisode(CrashEnv& env, const PolicyFn& policy, std::optional<uint64_t> seed,
+                         int scenario_index, const EpisodeOptions& options) {
   EpisodeResult r;
   env.Reset(seed, scenario_index);
   r.ids = env.vehicle_ids();
-  if (record) {
+  if (options.record) {
     r.trajectories.resize(r.ids.size());
     Record(env, r);
   }
+  if (options.on_step) options.on_step(env);
   while (!env.needs_reset()) {
     const Action a = policy(env);
     env.Step(a.data(), a.size());
-    if (record) Record(env, r);
+    if (options.record) Record(env, r);
+    if (options.on_step) options.on_step(env);
+    const auto& hit = env.info().ego_collision;
+    if (hit && options.after_collision > 0.0 && env.time() >= hit->time + options.after_collision - 1e-9) break;
   }
   const StepInfo& info = env.info();
   r.collision = info.ego_collision;
-  r.outcome = info.collision ? "collision" : info.off_road ? "off_road" : info.goal ? "goal" : "time_limit";
+  r.outcome = info.ego_collision ? "collision" : info.off_road ? "off_road" : info.goal ? "goal" : "time_limit";
   r.time = info.time;
   r.steps = info.episode_steps;
   r.episode_return = info.episode_return;

@@ -93,6 +93,19 @@ TEST(CliTest, BadInputGetsAClearErrorAndExitCode) {
   EXPECT_NE(r.out.find("/no/such/file.json"), std::string::npos) << r.out;
 }
 
+TEST(CliTest, WritesCollisionVideoAndImage) {
+  const std::string video = ::testing::TempDir() + "/crash.mp4", png = ::testing::TempDir() + "/crash.png";
+  const Result r = RunCli("simulate " + Example("right_turn") + " --ego hold --video " + video + " --png " + png +
+                          " --size 320");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_GT(ReadFile(video).size(), 10000u);
+  const std::string img = ReadFile(png);
+  ASSERT_GT(img.size(), 1000u);
+  EXPECT_EQ(img.substr(1, 3), "PNG");
+  // The summary is the same as without rendering.
+  EXPECT_NE(r.out.find("COLLISION at t = "), std::string::npos);
+}
+
 TEST(CliTest, HelpListsSubcommands) {
   const Result r = RunCli("--help");
   EXPECT_EQ(r.status, 0);

@@ -118,6 +118,22 @@ TEST(CrashEnvTest, CollisionTerminatesWithDetailsAndPenalty) {
   EXPECT_LT(env.info().min_ttc, 0.5);  // the TTC just before impact was tiny
 }
 
+TEST(CrashEnvTest, EpisodeCanContinuePastTheCollision) {
+  CrashEnvConfig c;
+  c.terminate_on_collision = false;
+  CrashEnv env(c, {Example("straight_obstacle")});
+  env.Reset(0);
+  const float hold[2] = {0.0f, 0.0f};
+  int steps_after = 0;
+  while (!env.needs_reset()) {
+    env.Step(hold, 2);
+    if (env.info().ego_collision) ++steps_after;
+  }
+  EXPECT_TRUE(env.truncated());  // ran to the time limit
+  EXPECT_GT(steps_after, 10);
+  EXPECT_EQ(env.info().ego_collision->other_id, "stopped_car");
+}
+
 TEST(CrashEnvTest, TimeLimitTruncates) {
   CrashEnvConfig c;
   c.time_limit = 2.0;

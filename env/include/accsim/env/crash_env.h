@@ -80,6 +80,7 @@ struct CrashEnvConfig {
   double post_contact_brake = 0.5;   // [-] fraction of max brake an NPC applies after its contact
   double start_speed_jitter = 0.0;   // [m/s] uniform +- on the ego's start speed, drawn at reset
   double npc_time_jitter = 0.0;      // [s] uniform +- shift of each NPC's timing, drawn at reset
+  bool terminate_on_collision = true;  // false: the episode goes on after the ego's first contact
   RewardWeights reward;
 };
 

@@ -29,8 +29,18 @@ struct EpisodeResult {
   std::vector<std::vector<TrajectoryPoint>> trajectories;
 };
 
+struct EpisodeOptions {
+  bool record = false;           // keep every vehicle's trajectory
+  // With CrashEnvConfig::terminate_on_collision = false: stop this long
+  // after the ego's first contact [s] (0 = run to the episode's end).
+  double after_collision = 0.0;
+  std::function<void(const CrashEnv&)> on_step;  // after reset and after every step
+};
+
 EpisodeResult RunEpisode(CrashEnv& env, const PolicyFn& policy, std::optional<uint64_t> seed,
                          int scenario_index = -1, bool record = false);
+EpisodeResult RunEpisode(CrashEnv& env, const PolicyFn& policy, std::optional<uint64_t> seed,
+                         int scenario_index, const EpisodeOptions& options);
 
 // Summary keys: outcome, collision, time, bodies, impulse, relative_speed,
 // closing_speed, point, steps, return, min_ttc, route_progress, npc_contacts.
