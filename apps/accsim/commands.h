@@ -17,6 +17,7 @@ struct UsageError : std::runtime_error {
 void AddSimulateCommand(CLI::App& app);
 void AddBenchCommand(CLI::App& app);
 void AddGenerateSuiteCommand(CLI::App& app);
+void AddEvaluateCommand(CLI::App& app);
 void AddExtractCommands(CLI::App& app);  // extract, eval-extraction
 
 }  // namespace accsim::cli

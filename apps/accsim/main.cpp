@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   accsim::cli::AddSimulateCommand(app);
   accsim::cli::AddBenchCommand(app);
   accsim::cli::AddGenerateSuiteCommand(app);
+  accsim::cli::AddEvaluateCommand(app);
 #ifdef ACCSIM_HAVE_EXTRACT
   accsim::cli::AddExtractCommands(app);
 #endif
