@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# The main job with bundled defaults: every example scenario under each
-# scripted ego driver, with the outcome of each run.
+# The main job with bundled defaults:
+#   1. every example scenario under each scripted ego driver;
+#   2. a balanced train/test suite generated from them;
+#   3. SafeBench-style collision rates of the drivers on the test suite;
+#   4. a collision video and image.
+# Everything lands in out/demo/.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-build}"
 accsim="$root/$build/bin/accsim"
 out="$root/out/demo"
 mkdir -p "$out"
+
+echo "== 1. example scenarios =="
 printf "%-24s %-6s %-10s %-8s %-12s %-10s\n" scenario ego outcome "t [s]" "impulse[Ns]" "rel [m/s]"
 for f in "$root"/scenarios/examples/*.json; do
   name="$(basename "$f" .json)"
@@ -15,4 +21,17 @@ for f in "$root"/scenarios/examples/*.json; do
       python3 "$root/scripts/demo_row.py" "$name" "$ego"
   done
 done
-echo "trajectories saved in out/demo/"
+
+echo
+echo "== 2. scenario suite =="
+"$accsim" generate-suite --train 240 --test 120 --seed 1 -o "$out/suite"
+
+echo
+echo "== 3. evaluation on the test suite =="
+"$accsim" evaluate "$out/suite/test.jsonl" --ego hold,brake,rule --markdown "$out/report.md"
+
+echo
+echo "== 4. collision video =="
+"$accsim" simulate "$root/scenarios/examples/unprotected_left_turn.json" --ego hold \
+  --video "$out/collision.mp4" --png "$out/collision.png" >/dev/null
+echo "wrote out/demo/collision.mp4 and collision.png; report in out/demo/report.md"

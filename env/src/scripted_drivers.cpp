@@ -53,18 +53,23 @@ Action RuleBasedPolicy(const CrashEnv& env, double horizon) {
   const VehicleState& e = w.state(0);
   const Polyline& route = env.route();
   const double speed = std::max(0.0, e.forward_speed());
+  const double target = env.scenario().ego.target_speed;
+  const double accel = 0.5 * w.params(0).max_accel;
   const double ego_radius = w.params(0).length / 2.0;
-  const double ego_s = env.route_s();
-  // Sample the next `horizon` seconds every 0.25 s: ego along its route at
-  // its current speed, others at constant velocity.
+  // Where the ego would be if it went on (back) to its target speed: judging
+  // conflicts by the current speed alone would let a stopped ego pull out
+  // into the gap it just braked for.
+  double s = env.route_s(), v = speed;
   for (double t = 0.25; t <= horizon + 1e-9; t += 0.25) {
-    const Vec2 ego_at = route.PointAt(ego_s + speed * t);
+    const double v_next = v < target ? std::min(target, v + accel * 0.25) : v;
+    s += 0.5 * (v + v_next) * 0.25;
+    v = v_next;
+    const Vec2 ego_at = route.PointAt(s);
     for (int i = 1; i < w.num_vehicles(); ++i) {
       const VehicleState& o = w.state(i);
       const Vec2 other_at = o.pose.position() + o.velocity * t;
-      const double gap = (other_at - ego_at).norm();
       const double radius = ego_radius + w.params(i).length / 2.0 + 1.0;
-      if (gap < radius) return {-1.0f, RouteSteering(env)};
+      if ((other_at - ego_at).norm() < radius) return {-1.0f, RouteSteering(env)};
     }
   }
   return HoldPolicy(env);
