@@ -152,6 +152,10 @@ std::pair<double, double> ReadPoint(const nlohmann::json& j, const std::string& 
   }
   const double x = j[0].get<double>(), y = j[1].get<double>();
   if (!std::isfinite(x) || !std::isfinite(y)) throw FieldError(path, "not a finite number");
+  constexpr double kLimit = 1e5;  // [m] the same bound as every other coordinate
+  if (std::abs(x) > kLimit || std::abs(y) > kLimit) {
+    throw FieldError(path, "coordinates must be within +-100 km of the origin");
+  }
   return {x, y};
 }
 

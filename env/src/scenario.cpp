@@ -87,6 +87,15 @@ RoadMapSpec RoadMapSpecFromJson(const nlohmann::json& j, const std::string& path
   const std::string surface = f.String("surface", "dry");
   m.surface = ParseEnum(f.PathOf("surface"), [&] { return SurfaceFromString(surface); });
   f.RejectUnknown();
+  // The map must be buildable (e.g. junction arms longer than the junction);
+  // RoadMap's messages start with the field name.
+  try {
+    RoadMap check(m);
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    const auto colon = msg.find(": ");
+    throw FieldError(f.PathOf(msg.substr(0, colon)), colon == std::string::npos ? msg : msg.substr(colon + 2));
+  }
   return m;
 }
 
