@@ -4,8 +4,6 @@
 #include <cmath>
 
 namespace accsim {
-namespace {
-
 float SpeedKeeping(const CrashEnv& env, double target) {
   const VehicleState& s = env.world().state(0);
   const VehicleParams& p = env.world().params(0);
@@ -16,25 +14,20 @@ float SpeedKeeping(const CrashEnv& env, double target) {
   return static_cast<float>(std::clamp(a, -1.0, 1.0));
 }
 
-}  // namespace
-
-float RouteSteering(const CrashEnv& env) {
+float RouteSteering(const CrashEnv& env, double lateral_offset) {
   const VehicleState& s = env.world().state(0);
   const VehicleParams& p = env.world().params(0);
   const Polyline& route = env.route();
   const double speed = std::max(0.0, s.forward_speed());
   const double lookahead = std::clamp(4.0 + 0.6 * speed, 4.0, 25.0);
   const auto proj = route.Project(s.pose.position(), env.route_s());
-  Vec2 target = route.PointAt(proj.s + lookahead);
+  const double st = proj.s + lookahead;
+  const double h = route.HeadingAt(st);
+  Vec2 target = route.PointAt(st) + lateral_offset * Vec2(-std::sin(h), std::cos(h));
   // Past the end of the route, keep going straight along its last heading.
-  const double beyond = proj.s + lookahead - route.length();
-  if (beyond > 0) {
-    const double h = route.HeadingAt(route.length());
-    target += beyond * Vec2(std::cos(h), std::sin(h));
-  }
+  if (st > route.length()) target += (st - route.length()) * Vec2(std::cos(h), std::sin(h));
   const Vec2 local = ToLocal(target - s.pose.position(), s.pose.yaw);
-  const double ld2 = std::max(1e-6, local.squaredNorm());
-  const double curvature = 2.0 * local.y() / ld2;
+  const double curvature = 2.0 * local.y() / std::max(1e-6, local.squaredNorm());
   const double steer = std::atan(curvature * p.wheelbase);
   return static_cast<float>(std::clamp(steer / p.max_steer, -1.0, 1.0));
 }

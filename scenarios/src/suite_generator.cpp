@@ -21,30 +21,6 @@ constexpr ScenarioFamily kFamilies[] = {ScenarioFamily::kStraightObstacle, Scena
 constexpr VehicleCount kCounts[] = {VehicleCount::kTwo, VehicleCount::kThree, VehicleCount::kMany};
 constexpr int kNumCells = 12;
 
-// Pure pursuit towards the route shifted sideways by `offset` [m] (+ left).
-float OffsetSteering(const CrashEnv& env, double offset) {
-  const VehicleState& s = env.world().state(0);
-  const VehicleParams& p = env.world().params(0);
-  const Polyline& route = env.route();
-  const double speed = std::max(0.0, s.forward_speed());
-  const double lookahead = std::clamp(4.0 + 0.6 * speed, 4.0, 25.0);
-  const auto proj = route.Project(s.pose.position(), env.route_s());
-  const double st = proj.s + lookahead;
-  const double h = route.HeadingAt(st);
-  Vec2 target = route.PointAt(st) + offset * Vec2(-std::sin(h), std::cos(h));
-  if (st > route.length()) target += (st - route.length()) * Vec2(std::cos(h), std::sin(h));
-  const Vec2 local = ToLocal(target - s.pose.position(), s.pose.yaw);
-  const double curvature = 2.0 * local.y() / std::max(1e-6, local.squaredNorm());
-  return static_cast<float>(std::clamp(std::atan(curvature * p.wheelbase) / p.max_steer, -1.0, 1.0));
-}
-
-float KeepSpeed(const CrashEnv& env, double target) {
-  const VehicleState& s = env.world().state(0);
-  const VehicleParams& p = env.world().params(0);
-  const double accel = (target - s.forward_speed()) / 0.5;
-  return static_cast<float>(std::clamp(accel >= 0 ? accel / p.max_accel : accel / p.max_brake, -1.0, 1.0));
-}
-
 // Stable 64-bit mixing (splitmix64) for per-cell seeds.
 uint64_t Mix(uint64_t x) {
   x += 0x9e3779b97f4a7c15ULL;
@@ -175,12 +151,12 @@ std::vector<Manoeuvre> AvoidanceManoeuvres() {
                    [side, onset](const CrashEnv& e) -> Action {
                      if (e.time() + 1e-9 < onset) return HoldPolicy(e);
                      const double width = e.map().spec().lane_width;
-                     return {KeepSpeed(e, e.scenario().ego.target_speed), OffsetSteering(e, side * width)};
+                     return {SpeedKeeping(e, e.scenario().ego.target_speed), RouteSteering(e, side * width)};
                    }});
     }
     m.push_back({std::string(side > 0 ? "swerve_left_brake" : "swerve_right_brake"),
                  [side](const CrashEnv& e) -> Action {
-                   return {-0.5f, OffsetSteering(e, side * e.map().spec().lane_width)};
+                   return {-0.5f, RouteSteering(e, side * e.map().spec().lane_width)};
                  }});
   }
   m.push_back({"accelerate", [](const CrashEnv& e) -> Action { return {1.0f, RouteSteering(e)}; }});

@@ -13,9 +13,12 @@ namespace accsim {
 
 using Action = std::array<float, 2>;
 
-// Pure-pursuit steering along the ego's route with a look-ahead that grows
-// with speed; the same for every driver below.
-float RouteSteering(const CrashEnv& env);
+// Pure-pursuit steering along the ego's route (shifted sideways by
+// `lateral_offset` metres, + left) with a look-ahead that grows with speed;
+// the same for every driver below.
+float RouteSteering(const CrashEnv& env, double lateral_offset = 0.0);
+// Proportional speed keeping towards `target` [m/s], in action units.
+float SpeedKeeping(const CrashEnv& env, double target);
 
 // Keeps the scenario's target speed along the route: the "inattentive
 // driver" that the reconstructed crash is built around.
