@@ -134,6 +134,36 @@ TEST(CrashEnvTest, EpisodeCanContinuePastTheCollision) {
   EXPECT_EQ(env.info().ego_collision->other_id, "stopped_car");
 }
 
+TEST(CrashEnvTest, PredictedPostCollisionTrajectoryIsReplayedFromTheContactPose) {
+  auto scenario = std::make_shared<Scenario>(*Example("straight_obstacle"));
+  NpcSpec& npc = scenario->npcs[0];
+  npc.post_collision = PostCollisionSource::kPredicted;
+  // Predicted: pushed 6 m forward and turned by 0.3 rad over 1.5 s, then at rest.
+  npc.predicted = Trajectory({{0.0, 0.0, 0.0, 0.0, 6.0}, {1.5, 6.0, 0.0, 0.3, 0.0}});
+  CrashEnvConfig c;
+  c.terminate_on_collision = false;
+  CrashEnv env(c, {scenario});
+  env.Reset(0);
+  const float brake_after[2] = {-1.0f, 0.0f}, hold[2] = {0.0f, 0.0f};
+  std::optional<Pose2> at_contact;
+  double t_contact = 0.0;
+  while (!env.needs_reset()) {
+    env.Step(env.info().ego_collision ? brake_after : hold, 2);
+    if (env.info().ego_collision && !at_contact) {
+      t_contact = env.info().ego_collision->time;
+      at_contact = env.world().state(1).pose;
+    }
+    if (at_contact && env.time() >= t_contact + 2.0) break;
+  }
+  ASSERT_TRUE(at_contact.has_value());
+  EXPECT_EQ(env.world().control(1), BodyControl::kTracking);  // replaying, not under physics
+  const Pose2 end = env.world().state(1).pose;
+  // The contact pose is recorded at the first touching substep; the step's
+  // end is up to 0.1 s later, so compare with the whole predicted motion.
+  EXPECT_NEAR(end.yaw - at_contact->yaw, 0.3, 0.05);
+  EXPECT_NEAR(end.x - at_contact->x, 6.0, 1.0);
+}
+
 TEST(CrashEnvTest, TimeLimitTruncates) {
   CrashEnvConfig c;
   c.time_limit = 2.0;
