@@ -1,0 +1,86 @@
+// VectorEnv: N CrashEnvs stepped together on a persistent thread pool, with
+// contiguous, owner-held output buffers (observations [N, obs_dim] float32,
+// rewards [N] float64, terminated/truncated [N] uint8) that bindings expose
+// without copying.
+//
+// Autoreset (Gymnasium 1.x terms):
+//  * kNextStep: the step after an episode ends resets that environment and
+//    reports its first observation with reward 0 and both flags false.
+//  * kSameStep: an ending environment is reset within the same step; its
+//    final observation is kept in final_observations() (Stable-Baselines3's
+//    convention).
+// Determinism: each environment's results depend only on its own seed
+// (Reset(seed) gives environment i the seed `seed + i`), never on the
+// number of threads or on scheduling.
+// Thread-safety: call from one thread at a time; the pool is internal.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "accsim/env/crash_env.h"
+
+namespace accsim {
+
+enum class AutoresetMode { kNextStep, kSameStep };
+
+class VectorEnv {
+ public:
+  // `num_threads` 0 means one per hardware thread (at most num_envs).
+  VectorEnv(int num_envs, const CrashEnvConfig& config, std::vector<std::shared_ptr<const Scenario>> scenarios,
+            int num_threads = 0, AutoresetMode mode = AutoresetMode::kNextStep);
+  ~VectorEnv();
+  VectorEnv(const VectorEnv&) = delete;
+  VectorEnv& operator=(const VectorEnv&) = delete;
+
+  int num_envs() const { return static_cast<int>(envs_.size()); }
+  int num_threads() const { return num_threads_; }
+  AutoresetMode autoreset_mode() const { return mode_; }
+  const EnvSpec& spec() const { return envs_.front()->spec(); }
+
+  // Resets every environment; with a seed, environment i gets seed + i.
+  void Reset(std::optional<uint64_t> seed = std::nullopt);
+  // `actions` is [num_envs, action_dim] row-major. Validates every element
+  // first (throws std::invalid_argument naming env and element, stepping
+  // nothing), then steps all environments in parallel.
+  void Step(const float* actions, size_t size);
+
+  float* observations() { return obs_.data(); }
+  const double* rewards() const { return rewards_.data(); }
+  const uint8_t* terminated() const { return terminated_.data(); }
+  const uint8_t* truncated() const { return truncated_.data(); }
+  // kSameStep: the last observation of environments that ended this step.
+  const float* final_observations() const { return final_obs_.data(); }
+  const CrashEnv& env(int i) const { return *envs_.at(static_cast<size_t>(i)); }
+
+ private:
+  void ParallelFor(const std::function<void(int)>& fn);
+  void WorkerLoop(int worker);
+  void StepOne(int i, const float* action);
+
+  std::vector<std::unique_ptr<CrashEnv>> envs_;
+  AutoresetMode mode_;
+  int num_threads_ = 1;
+  std::vector<float> obs_, final_obs_;
+  std::vector<double> rewards_;
+  std::vector<uint8_t> terminated_, truncated_;
+  bool was_reset_ = false;
+
+  // Thread pool: workers wait for a new generation, run their share of
+  // indices (a fixed stride, so the split is deterministic), then report.
+  std::vector<std::thread> workers_;
+  std::mutex mu_;
+  std::condition_variable start_cv_, done_cv_;
+  const std::function<void(int)>* job_ = nullptr;
+  long generation_ = 0;
+  int pending_ = 0;
+  bool stop_ = false;
+};
+
+}  // namespace accsim
