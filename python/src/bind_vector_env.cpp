@@ -1,0 +1,116 @@
+// VectorEnv with zero-copy numpy outputs, for accsim.vector.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <nlohmann/json.hpp>
+
+#include "accsim/env/vector_env.h"
+#include "accsim/scenarios/suite_generator.h"
+#include "bindings.h"
+
+namespace py = pybind11;
+
+namespace accsim::python {
+namespace {
+
+std::vector<std::shared_ptr<const Scenario>> Load(const std::vector<std::string>& paths) {
+  std::vector<std::shared_ptr<const Scenario>> out;
+  for (const auto& p : paths) {
+    if (p.size() > 6 && p.substr(p.size() - 6) == ".jsonl") {
+      for (auto& s : LoadSuite(p)) out.push_back(std::make_shared<const Scenario>(std::move(s)));
+    } else {
+      out.push_back(std::make_shared<const Scenario>(LoadScenarioFile(p)));
+    }
+  }
+  if (out.empty()) throw std::invalid_argument("scenario: no scenario files given");
+  return out;
+}
+
+// A numpy view of a buffer owned by the VectorEnv; `owner` (the Python
+// wrapper of the VectorEnv) becomes the array's base, so the env lives as
+// long as any view does.
+template <typename T>
+py::array View(T* data, std::vector<py::ssize_t> shape, py::handle owner) {
+  return py::array(py::dtype::of<T>(), std::move(shape), data, owner);
+}
+
+}  // namespace
+
+void DefineVectorEnv(py::module_& m) {
+  py::class_<VectorEnv>(m, "VectorEnv", "N CrashEnvs stepped on a C++ thread pool")
+      .def(py::init([](int num_envs, const std::vector<std::string>& scenarios, const std::string& config_yaml,
+                       const std::string& config_json, int num_threads, bool same_step) {
+             CrashEnvConfig c;
+             if (!config_yaml.empty()) {
+               c = LoadCrashEnvConfig(config_yaml);
+             } else if (!config_json.empty()) {
+               c = CrashEnvConfigFromJson(nlohmann::json::parse(config_json));
+             }
+             return std::make_unique<VectorEnv>(num_envs, c, Load(scenarios), num_threads,
+                                                same_step ? AutoresetMode::kSameStep : AutoresetMode::kNextStep);
+           }),
+           py::arg("num_envs"), py::arg("scenarios"), py::arg("config_yaml") = "", py::arg("config_json") = "",
+           py::arg("num_threads") = 0, py::arg("same_step") = false)
+      .def_property_readonly("num_envs", &VectorEnv::num_envs)
+      .def_property_readonly("num_threads", &VectorEnv::num_threads)
+      .def_property_readonly("obs_dim", [](const VectorEnv& v) { return v.spec().obs_dim; })
+      .def(
+          "reset",
+          [](VectorEnv& v, std::optional<uint64_t> seed) {
+            py::gil_scoped_release release;
+            v.Reset(seed);
+          },
+          py::arg("seed") = py::none())
+      .def(
+          "step",
+          [](VectorEnv& v, py::array actions_in) {
+            // Validate with the GIL held: shape and dtype here, finiteness in C++.
+            if (actions_in.ndim() != 2 || actions_in.shape(0) != v.num_envs() ||
+                actions_in.shape(1) != v.spec().action_dim) {
+              std::string shape;
+              for (py::ssize_t d = 0; d < actions_in.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(actions_in.shape(d));
+              throw py::value_error("actions: expected shape (" + std::to_string(v.num_envs()) + ", " +
+                                    std::to_string(v.spec().action_dim) + "), got (" + shape + ")");
+            }
+            if (actions_in.dtype().kind() != 'f' && actions_in.dtype().kind() != 'i' && actions_in.dtype().kind() != 'u') {
+              throw py::value_error("actions: expected a numeric array, got dtype " +
+                                    std::string(py::str(actions_in.dtype())));
+            }
+            auto actions = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(actions_in);
+            const float* data = actions.data();
+            const size_t size = static_cast<size_t>(actions.size());
+            py::gil_scoped_release release;
+            v.Step(data, size);
+          },
+          py::arg("actions"))
+      .def_property_readonly("observations",
+                             [](py::object self) {
+                               auto& v = self.cast<VectorEnv&>();
+                               return View(v.observations(), {v.num_envs(), v.spec().obs_dim}, self);
+                             })
+      .def_property_readonly("final_observations",
+                             [](py::object self) {
+                               auto& v = self.cast<VectorEnv&>();
+                               return View(const_cast<float*>(v.final_observations()), {v.num_envs(), v.spec().obs_dim}, self);
+                             })
+      .def_property_readonly("rewards",
+                             [](py::object self) {
+                               auto& v = self.cast<VectorEnv&>();
+                               return View(const_cast<double*>(v.rewards()), {v.num_envs()}, self);
+                             })
+      .def_property_readonly("terminated",
+                             [](py::object self) {
+                               auto& v = self.cast<VectorEnv&>();
+                               return View(const_cast<uint8_t*>(v.terminated()), {v.num_envs()}, self);
+                             })
+      .def_property_readonly("truncated",
+                             [](py::object self) {
+                               auto& v = self.cast<VectorEnv&>();
+                               return View(const_cast<uint8_t*>(v.truncated()), {v.num_envs()}, self);
+                             })
+      .def("collided", [](const VectorEnv& v, int i) { return v.env(i).info().ego_collision.has_value(); })
+      .def("episode_return", [](const VectorEnv& v, int i) { return v.env(i).info().episode_return; })
+      .def("episode_steps", [](const VectorEnv& v, int i) { return v.env(i).info().episode_steps; });
+}
+
+}  // namespace accsim::python
