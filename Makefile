@@ -38,7 +38,7 @@ test: build venv
 bench: build venv
 	@$(BUILD_DIR)/bin/accsim bench
 	@$(BUILD_DIR)/bin/accsim_benchmarks --benchmark_min_time=0.2
-	@if [ -f scripts/bench-python.sh ]; then bash scripts/bench-python.sh $(BUILD_DIR); fi
+	@if [ -f scripts/bench-python.sh ]; then bash scripts/bench-python.sh; fi
 
 sanitize: deps
 	@cmake -S . -B $(SAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCSIM_SANITIZE=ON -DACCSIM_BUILD_BENCH=OFF > /dev/null
