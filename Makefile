@@ -4,7 +4,7 @@ SAN_DIR   ?= build-asan
 JOBS      ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps venv configure build demo test bench sanitize clean help
+.PHONY: all deps venv configure build demo test bench sanitize fuzz clean help
 
 all: build
 
@@ -14,6 +14,7 @@ help:
 	@echo "make test     build and run every test (ctest, then pytest)"
 	@echo "make bench    print the benchmarks (accsim bench, Google Benchmark)"
 	@echo "make sanitize build with ASan/UBSan and run the C++ tests"
+	@echo "make fuzz     libFuzzer on the narrative extractor for FUZZ_SECONDS (clang, ASan/UBSan)"
 
 deps:
 	@bash scripts/install-deps.sh
@@ -45,5 +46,14 @@ sanitize: deps
 	@cmake --build $(SAN_DIR) -j $(JOBS)
 	@cd $(SAN_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@CC=clang-14 CXX=clang++-14 cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCSIM_SANITIZE=ON \
+	  -DACCSIM_BUILD_FUZZ=ON -DACCSIM_BUILD_TESTS=OFF -DACCSIM_BUILD_BENCH=OFF -DACCSIM_BUILD_PYTHON=OFF > /dev/null
+	@cmake --build $(FUZZ_DIR) --target accsim_fuzz_extractor -j $(JOBS)
+	@mkdir -p $(FUZZ_DIR)/corpus && cp scenarios/examples/*.json $(FUZZ_DIR)/corpus/ 2>/dev/null || true
+	@$(FUZZ_DIR)/bin/accsim_fuzz_extractor -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 $(FUZZ_DIR)/corpus
+
 clean:
-	rm -rf $(BUILD_DIR) $(SAN_DIR)
+	rm -rf $(BUILD_DIR) $(SAN_DIR) $(FUZZ_DIR)

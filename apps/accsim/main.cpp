@@ -12,9 +12,7 @@ int main(int argc, char** argv) {
   accsim::cli::AddBenchCommand(app);
   accsim::cli::AddGenerateSuiteCommand(app);
   accsim::cli::AddEvaluateCommand(app);
-#ifdef ACCSIM_HAVE_EXTRACT
   accsim::cli::AddExtractCommands(app);
-#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,115 @@
+#include "accsim/scenarios/narrative_extractor.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace accsim {
+namespace {
+
+const NarrativeExtractor kExtractor;
+
+TEST(NarrativeExtractorTest, RearEndWithMphAndVehicleWords) {
+  const auto r = kExtractor.Extract(
+      "The crash happened on a two-lane, two-way road with a posted speed limit of 35 mph. Vehicle one, a 2004 "
+      "Ford F-150 pickup, was traveling northbound at about 45 mph. Vehicle two, a 1999 Honda Civic, was stopped "
+      "in the lane ahead. The front of V1 struck the back of V2. The driver of V2 was a 30-year old male who was "
+      "transported to a hospital.");
+  EXPECT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.participant_count.source, Provenance::kStated);
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+  EXPECT_EQ(r.road.speed_limit_unit.value, "mph");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  EXPECT_EQ(r.vehicles[0].vehicle_class.value, VehicleClass::kPickup);
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_NEAR(r.vehicles[0].speed_mps.value, 45 * 0.44704, 1e-6);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
+
+TEST(NarrativeExtractorTest, PassiveVoiceAndKmh) {
+  const auto r = kExtractor.Extract(
+      "This crash occurred at a four-leg intersection of two undivided roads, each with 2 lanes in each "
+      "direction; the posted speed limit was 56 km/h (35 mph). V1, a 2001 Toyota Camry, was eastbound going "
+      "straight. V2, a Chevrolet Suburban, was southbound. V1 was struck on the left side by the front of V2 in "
+      "the intersection.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value * 3.6, 56.0, 1e-9);
+  EXPECT_EQ(r.road.speed_limit_unit.value, "km/h");
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+  EXPECT_EQ(r.road.lanes_total.value, 4);
+  EXPECT_EQ(r.road.kind.value, RoadKind::kIntersection);
+  EXPECT_EQ(r.vehicles[1].vehicle_class.value, VehicleClass::kSuv);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+}
+
+TEST(NarrativeExtractorTest, LeftTurnAcrossOncomingTraffic) {
+  const auto r = kExtractor.Extract(
+      "Vehicle #1 was traveling west and turned left at the intersection. Vehicle #2 was traveling east "
+      "through the intersection. The front of Vehicle #2 impacted the right side of Vehicle #1.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+}
+
+TEST(NarrativeExtractorTest, WaitingToTurnIsStoppedNotTurning) {
+  const auto r = kExtractor.Extract(
+      "V2 was stopped in the eastbound lane waiting to turn left. V1, traveling east, did not see it and the "
+      "front of V1 struck the back of V2.");
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
+
+TEST(NarrativeExtractorTest, HeadOnInfersTheStruckFront) {
+  const auto r = kExtractor.Extract(
+      "V1 was northbound and drifted over the center line. V2 was southbound. V1 impacted V2 with its front.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.source, Provenance::kInferred);
+}
+
+TEST(NarrativeExtractorTest, BadInputNeverThrowsAndSaysWhatWasDefaulted) {
+  for (const std::string& text :
+       {std::string(""), std::string("   \n\t "), std::string("The weather was nice and we had lunch."),
+        std::string("El vehiculo uno choco contra el vehiculo dos en la interseccion."),
+        std::string("\x00\x01\xff\xfe binary \x80", 14)}) {
+    AccidentRecord r;
+    ASSERT_NO_THROW(r = kExtractor.Extract(text)) << text;
+    EXPECT_FALSE(r.warnings.empty()) << text;
+    EXPECT_EQ(r.crash.striking.source, Provenance::kDefaulted);
+    EXPECT_NO_THROW(ToJson(r).dump());
+  }
+  std::mt19937_64 rng(1);
+  std::string junk(100000, ' ');
+  for (auto& c : junk) c = static_cast<char>(rng() & 0xff);
+  EXPECT_NO_THROW(ToJson(kExtractor.Extract(junk)).dump());
+}
+
+TEST(NarrativeExtractorTest, HugeTextIsCappedWithAWarning) {
+  std::string text;
+  while (text.size() < 10'000'000) text += "V1 was traveling north and struck the rear of V2. ";
+  const auto r = kExtractor.Extract(text);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.front().find("only the start was read"), std::string::npos);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
+
+TEST(NarrativeExtractorTest, JsonCarriesProvenanceOnEveryField) {
+  const auto j = ToJson(kExtractor.Extract("V1 struck V2."));
+  EXPECT_EQ(j["schema_version"], 1);
+  EXPECT_EQ(j["crash"]["striking"]["source"], "stated");
+  EXPECT_EQ(j["road"]["speed_limit_mps"]["source"], "defaulted");
+  EXPECT_EQ(j["vehicles"][0]["movement"]["source"], "inferred");
+}
+
+}  // namespace
+}  // namespace accsim
