@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   accsim::cli::AddGenerateSuiteCommand(app);
   accsim::cli::AddEvaluateCommand(app);
   accsim::cli::AddExtractCommands(app);
+  accsim::cli::AddReconstructCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

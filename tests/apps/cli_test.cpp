@@ -106,6 +106,23 @@ TEST(CliTest, WritesCollisionVideoAndImage) {
   EXPECT_NE(r.out.find("COLLISION at t = "), std::string::npos);
 }
 
+TEST(CliTest, ReconstructsANarrativeIntoASimulatableScenario) {
+  const std::string text = ::testing::TempDir() + "/report.txt", out = ::testing::TempDir() + "/rec.json";
+  std::ofstream(text) << "Vehicle one was traveling east at 35 mph. Vehicle two was stopped in the lane ahead. "
+                         "The front of V1 struck the back of V2.";
+  Result r = RunCli("reconstruct " + text + " -o " + out + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["success"].get<bool>()) << r.out;
+  EXPECT_EQ(j["crash_type"], "rear_end");
+  // The reconstruction is an environment scenario: holding V2 (the ego,
+  // stopped) is hit by V1.
+  r = RunCli("simulate " + out + " --ego hold --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(nlohmann::json::parse(r.out)["collision"].get<bool>());
+  EXPECT_NE(RunCli("reconstruct /no/such.txt -o " + out).status, 0);
+}
+
 TEST(CliTest, HelpListsSubcommands) {
   const Result r = RunCli("--help");
   EXPECT_EQ(r.status, 0);
