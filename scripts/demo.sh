@@ -23,8 +23,25 @@ for f in "$root"/scenarios/examples/*.json; do
 done
 
 echo
-echo "== 2. scenario suite =="
-"$accsim" generate-suite --train 240 --test 120 --seed 1 -o "$out/suite"
+echo "== 2. crash reports -> reconstructed scenarios -> suite =="
+sources="$root/scenarios/examples"
+narratives="$root/../shared/data/narratives/nmvccs"
+if [ -d "$narratives" ]; then
+  mkdir -p "$out/reconstructed"
+  ok=0; total=0
+  for f in "$narratives"/*/*.txt; do
+    case_id="$(basename "$(dirname "$f")")_$(basename "$f" .txt)"
+    total=$((total + 1))
+    if "$accsim" reconstruct "$f" -o "$out/reconstructed/$case_id.json" --json 2>/dev/null | grep -q '"success":true'; then
+      ok=$((ok + 1))
+    else
+      rm -f "$out/reconstructed/$case_id.json"
+    fi
+  done
+  echo "reconstructed $ok of $total NMVCCS reports (checked in Bullet) into out/demo/reconstructed/"
+  sources="$out/reconstructed"
+fi
+"$accsim" generate-suite --train 240 --test 120 --seed 1 --sources "$sources" -o "$out/suite"
 
 echo
 echo "== 3. evaluation on the test suite =="
