@@ -21,19 +21,6 @@ struct EvaluateOptions {
   bool json = false;
 };
 
-std::vector<std::shared_ptr<const Scenario>> LoadScenarios(const std::vector<std::string>& inputs) {
-  std::vector<std::shared_ptr<const Scenario>> out;
-  for (const auto& in : inputs) {
-    const std::filesystem::path p(in);
-    if (p.extension() == ".jsonl") {
-      for (auto& s : LoadSuite(in)) out.push_back(std::make_shared<const Scenario>(std::move(s)));
-    } else {
-      out.push_back(std::make_shared<const Scenario>(LoadScenarioFile(in)));
-    }
-  }
-  return out;
-}
-
 PolicyFn Driver(const std::string& name) {
   if (name == "hold") return [](const CrashEnv& e) { return HoldPolicy(e); };
   if (name == "brake") return [](const CrashEnv& e) { return BrakePolicy(e, 0.0); };
@@ -41,7 +28,7 @@ PolicyFn Driver(const std::string& name) {
 }
 
 void RunEvaluate(const EvaluateOptions& o) {
-  const auto scenarios = LoadScenarios(o.inputs);
+  const auto scenarios = LoadScenarioSet(o.inputs);
   const CrashEnvConfig config = o.config.empty() ? CrashEnvConfig{} : LoadCrashEnvConfig(o.config);
   std::vector<EvaluationReport> reports;
   for (const auto& d : o.drivers) reports.push_back(Evaluate(scenarios, Driver(d), d, config));

@@ -14,32 +14,6 @@ namespace py = pybind11;
 namespace accsim::python {
 namespace {
 
-using ScenarioList = std::vector<std::shared_ptr<const Scenario>>;
-
-// Scenarios from .json files and .jsonl suites.
-ScenarioList LoadScenarios(const std::vector<std::string>& paths) {
-  ScenarioList out;
-  for (const auto& p : paths) {
-    if (p.size() > 6 && p.substr(p.size() - 6) == ".jsonl") {
-      for (auto& s : LoadSuite(p)) out.push_back(std::make_shared<const Scenario>(std::move(s)));
-    } else {
-      out.push_back(std::make_shared<const Scenario>(LoadScenarioFile(p)));
-    }
-  }
-  if (out.empty()) throw std::invalid_argument("scenario: no scenario files given");
-  return out;
-}
-
-// Config from a YAML path or a JSON string (Python dicts are dumped to JSON).
-CrashEnvConfig LoadConfig(const std::string& yaml_path, const std::string& json_text) {
-  if (!yaml_path.empty()) return LoadCrashEnvConfig(yaml_path);
-  if (json_text.empty()) return CrashEnvConfig{};
-  try {
-    return CrashEnvConfigFromJson(nlohmann::json::parse(json_text));
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(std::string("config: ") + e.what());
-  }
-}
 
 py::dict InfoDict(const CrashEnv& env) {
   const StepInfo& i = env.info();
@@ -83,6 +57,16 @@ py::array_t<float> ObsCopy(const CrashEnv& env) {
 
 }  // namespace
 
+CrashEnvConfig LoadConfig(const std::string& yaml_path, const std::string& json_text) {
+  if (!yaml_path.empty()) return LoadCrashEnvConfig(yaml_path);
+  if (json_text.empty()) return CrashEnvConfig{};
+  try {
+    return CrashEnvConfigFromJson(nlohmann::json::parse(json_text));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(std::string("config: ") + e.what());
+  }
+}
+
 void DefineEnv(py::module_& m) {
   py::class_<EnvSpec>(m, "EnvSpec", "Observation and action layout derived from a config")
       .def_readonly("obs_dim", &EnvSpec::obs_dim)
@@ -101,7 +85,7 @@ void DefineEnv(py::module_& m) {
   py::class_<CrashEnv>(m, "CrashEnv", "One ego vehicle through a reconstructed crash (C++ core)")
       .def(py::init([](const std::vector<std::string>& scenarios, const std::string& config_yaml,
                        const std::string& config_json) {
-             return std::make_unique<CrashEnv>(LoadConfig(config_yaml, config_json), LoadScenarios(scenarios));
+             return std::make_unique<CrashEnv>(LoadConfig(config_yaml, config_json), LoadScenarioSet(scenarios));
            }),
            py::arg("scenarios"), py::arg("config_yaml") = "", py::arg("config_json") = "")
       .def_property_readonly("spec", &CrashEnv::spec, py::return_value_policy::reference_internal)

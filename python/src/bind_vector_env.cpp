@@ -13,18 +13,6 @@ namespace py = pybind11;
 namespace accsim::python {
 namespace {
 
-std::vector<std::shared_ptr<const Scenario>> Load(const std::vector<std::string>& paths) {
-  std::vector<std::shared_ptr<const Scenario>> out;
-  for (const auto& p : paths) {
-    if (p.size() > 6 && p.substr(p.size() - 6) == ".jsonl") {
-      for (auto& s : LoadSuite(p)) out.push_back(std::make_shared<const Scenario>(std::move(s)));
-    } else {
-      out.push_back(std::make_shared<const Scenario>(LoadScenarioFile(p)));
-    }
-  }
-  if (out.empty()) throw std::invalid_argument("scenario: no scenario files given");
-  return out;
-}
 
 // A numpy view of a buffer owned by the VectorEnv; `owner` (the Python
 // wrapper of the VectorEnv) becomes the array's base, so the env lives as
@@ -40,13 +28,7 @@ void DefineVectorEnv(py::module_& m) {
   py::class_<VectorEnv>(m, "VectorEnv", "N CrashEnvs stepped on a C++ thread pool")
       .def(py::init([](int num_envs, const std::vector<std::string>& scenarios, const std::string& config_yaml,
                        const std::string& config_json, int num_threads, bool same_step) {
-             CrashEnvConfig c;
-             if (!config_yaml.empty()) {
-               c = LoadCrashEnvConfig(config_yaml);
-             } else if (!config_json.empty()) {
-               c = CrashEnvConfigFromJson(nlohmann::json::parse(config_json));
-             }
-             return std::make_unique<VectorEnv>(num_envs, c, Load(scenarios), num_threads,
+             return std::make_unique<VectorEnv>(num_envs, LoadConfig(config_yaml, config_json), LoadScenarioSet(scenarios), num_threads,
                                                 same_step ? AutoresetMode::kSameStep : AutoresetMode::kNextStep);
            }),
            py::arg("num_envs"), py::arg("scenarios"), py::arg("config_yaml") = "", py::arg("config_json") = "",

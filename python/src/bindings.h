@@ -3,7 +3,14 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
+#include "accsim/env/crash_env.h"
+
 namespace accsim::python {
+
+// Config from a YAML path or a JSON string (Python dicts arrive as JSON).
+CrashEnvConfig LoadConfig(const std::string& yaml_path, const std::string& json_text);
 
 void DefineEnv(pybind11::module_& m);
 void DefineVectorEnv(pybind11::module_& m);

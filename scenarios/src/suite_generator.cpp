@@ -274,4 +274,17 @@ std::vector<Scenario> LoadSuite(const std::string& path) {
   return out;
 }
 
+std::vector<std::shared_ptr<const Scenario>> LoadScenarioSet(const std::vector<std::string>& paths) {
+  std::vector<std::shared_ptr<const Scenario>> out;
+  for (const auto& p : paths) {
+    if (p.size() > 6 && p.compare(p.size() - 6, 6, ".jsonl") == 0) {
+      for (auto& s : LoadSuite(p)) out.push_back(std::make_shared<const Scenario>(std::move(s)));
+    } else {
+      out.push_back(std::make_shared<const Scenario>(LoadScenarioFile(p)));
+    }
+  }
+  if (out.empty()) throw std::invalid_argument("scenario: no scenario files given");
+  return out;
+}
+
 }  // namespace accsim

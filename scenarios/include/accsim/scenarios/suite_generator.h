@@ -79,5 +79,8 @@ void WriteSuite(const Suite& suite, const std::string& dir, const SuiteOptions& 
 nlohmann::json StatsJson(const Suite& suite, const SuiteOptions& options);
 // Reads a JSONL suite; errors name the file, the line and the field.
 std::vector<Scenario> LoadSuite(const std::string& path);
+// Scenario files (.json) and suites (.jsonl), in order, as shared scenarios
+// for environments; throws std::invalid_argument when none are given.
+std::vector<std::shared_ptr<const Scenario>> LoadScenarioSet(const std::vector<std::string>& paths);
 
 }  // namespace accsim
