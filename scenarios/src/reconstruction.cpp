@@ -190,6 +190,14 @@ Reconstruction PlanVariant(const CrashDescription& described, uint64_t seed, int
     spec.length = 600.0;
     if (type == CrashType::kSideswipeSame) spec.lanes_per_direction = std::max(2, spec.lanes_per_direction);
   }
+  // "Stopped" in a junction crash is coded for the wait at the stop line;
+  // the vehicle then pulls into the junction, so it crosses at walking-pace
+  // start-up speed rather than standing still (which could never meet).
+  constexpr double kPullAwaySpeed = 4.0;  // [m/s]
+  if (junction_type) {
+    if (va <= 0.0) va = kPullAwaySpeed;
+    if (vb <= 0.0) vb = kPullAwaySpeed;
+  }
   const RoadMap map(spec);
   const double w = spec.lane_width;
   auto through = [&](Compass travel, int index) {
