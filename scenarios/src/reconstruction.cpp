@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -239,8 +240,12 @@ Reconstruction PlanVariant(const CrashDescription& described, uint64_t seed, int
       break;
     }
     case CrashType::kSideswipeSame: {
-      path_b = map.lane(map.FindLane(Compass::kEast, false, 0)).centreline;
-      const double y_from = -1.5 * w, y_to = -0.5 * w;
+      // Lane 0 is next to the centre line. The striker drifts into the
+      // struck vehicle's lane from the side the damage says it came from:
+      // a struck left side (or a striking right side) means from its left.
+      const bool from_left = d.struck_area == DamageArea::kLeft || d.striker_area == DamageArea::kRight;
+      path_b = map.lane(map.FindLane(Compass::kEast, false, from_left ? 1 : 0)).centreline;
+      const double y_from = from_left ? -0.5 * w : -1.5 * w, y_to = from_left ? -1.5 * w : -0.5 * w;
       path_a = DubinsDetour(Vec2(-300.0, y_from), Vec2(-40.0, y_from), Vec2(10.0, y_to), 0.0, 300.0);
       if (va < vb + 2.0) va = vb + 2.0;
       s_b = path_b.Project(Vec2(0.0, y_to)).s;
@@ -494,7 +499,16 @@ CrashDescription FromLabels(const nlohmann::json& row, RoadType road) {
     d.vehicles.push_back(veh);
   }
   if (row.contains("events") && row["events"].is_array() && !row["events"].empty()) {
-    const auto& e = row["events"][0];
+    // Events are not always listed in order; the crash being reconstructed is
+    // the first harmful event between two vehicles, else the first at all.
+    const nlohmann::json* first = &row["events"][0];
+    int best = std::numeric_limits<int>::max();
+    for (const auto& ev : row["events"]) {
+      if (Get(ev, "object_hit").rfind("Vehicle#", 0) != 0) continue;
+      const int n = std::atoi(Get(ev, "event_number").c_str());
+      if (n < best) best = n, first = &ev;
+    }
+    const auto& e = *first;
     d.striker = std::max(1, std::atoi(Get(e, "striker_vehicle").c_str()));
     const std::string hit = Get(e, "object_hit");
     d.struck = hit.rfind("Vehicle#", 0) == 0 ? std::atoi(hit.substr(8).c_str()) : 0;
