@@ -33,6 +33,29 @@ TEST(ReconstructionTest, RearEndMeetsFrontToBackAtThePlannedTime) {
   EXPECT_NEAR(c.contact_time, r.state.time, 0.5);
 }
 
+TEST(ReconstructionTest, SideswipeComesFromTheDamagedSide) {
+  // Both sides must be reachable: a left-side sideswipe used to be planned
+  // from the struck vehicle's right.
+  for (const DamageArea side : {DamageArea::kLeft, DamageArea::kRight}) {
+    auto d = Two(CrashType::kSideswipeSame, RoadType::kStraight, DamageArea::kUnknown, side);
+    d.vehicles[0].movement = Movement::kChangingLanes;
+    const ReconstructionCheck c = CheckReconstruction(PlanReconstruction(d));
+    // The check itself verifies the described side (a corner counts for
+    // both of its faces, so struck_face may name the other one).
+    EXPECT_TRUE(c.success) << c.reason;
+  }
+}
+
+TEST(ReconstructionTest, StoppedVehicleInAJunctionCrashPullsAway) {
+  // "Stopped in traffic lane" at a junction is the wait at the stop line;
+  // planned at zero speed the vehicles would never meet.
+  auto d = Two(CrashType::kAngle, RoadType::kIntersection, DamageArea::kFront, DamageArea::kLeft);
+  d.vehicles[0].movement = Movement::kStopped;
+  d.vehicles[0].speed = 0.0;
+  const ReconstructionCheck c = CheckReconstruction(PlanReconstruction(d));
+  EXPECT_TRUE(c.success) << c.reason;
+}
+
 TEST(ReconstructionTest, EveryTwoVehicleCrashTypeReconstructs) {
   struct Case {
     CrashType type;
