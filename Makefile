@@ -42,7 +42,7 @@ bench: build venv
 	@if [ -f scripts/bench-python.sh ]; then bash scripts/bench-python.sh; fi
 
 sanitize: deps
-	@cmake -S . -B $(SAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCSIM_SANITIZE=ON -DACCSIM_BUILD_BENCH=OFF > /dev/null
+	@cmake -S . -B $(SAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCSIM_SANITIZE=ON -DACCSIM_BUILD_BENCH=OFF -DACCSIM_BUILD_PYTHON=OFF > /dev/null
 	@cmake --build $(SAN_DIR) -j $(JOBS)
 	@cd $(SAN_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
