@@ -6,6 +6,19 @@
 #include <string>
 
 namespace accsim {
+namespace {
+
+// Refuses a second concurrent Reset()/Step() (for example from two Python
+// threads once the GIL is released) rather than racing on the buffers.
+std::unique_lock<std::mutex> ExclusiveCall(std::mutex& mu) {
+  std::unique_lock<std::mutex> lock(mu, std::try_to_lock);
+  if (!lock.owns_lock()) {
+    throw std::logic_error("VectorEnv: Reset()/Step() called while another call is running on another thread");
+  }
+  return lock;
+}
+
+}  // namespace
 
 VectorEnv::VectorEnv(int num_envs, const CrashEnvConfig& config,
                      std::vector<std::shared_ptr<const Scenario>> scenarios, int num_threads, AutoresetMode mode)
@@ -13,12 +26,16 @@ VectorEnv::VectorEnv(int num_envs, const CrashEnvConfig& config,
   if (num_envs < 1 || num_envs > 65536) throw std::invalid_argument("num_envs: must be in [1, 65536]");
   if (num_threads < 0 || num_threads > 1024) throw std::invalid_argument("num_threads: must be in [0, 1024]");
   for (int i = 0; i < num_envs; ++i) envs_.push_back(std::make_unique<CrashEnv>(config, scenarios));
-  const int dim = spec().obs_dim;
-  obs_.assign(static_cast<size_t>(num_envs) * dim, 0.0f);
-  final_obs_.assign(static_cast<size_t>(num_envs) * dim, 0.0f);
-  rewards_.assign(static_cast<size_t>(num_envs), 0.0);
-  terminated_.assign(static_cast<size_t>(num_envs), 0);
-  truncated_.assign(static_cast<size_t>(num_envs), 0);
+  const size_t n = static_cast<size_t>(num_envs);
+  const size_t dim = static_cast<size_t>(spec().obs_dim);
+  obs_.assign(n * dim, 0.0f);
+  final_obs_.assign(n * dim, 0.0f);
+  rewards_.assign(n, 0.0);
+  reward_terms_.assign(n * kNumRewardTerms, 0.0);
+  terminated_.assign(n, 0);
+  truncated_.assign(n, 0);
+  final_infos_.assign(n, StepInfo{});
+  errors_.assign(n, nullptr);
   const int hw = std::max(1u, std::thread::hardware_concurrency());
   num_threads_ = std::min(num_envs, num_threads == 0 ? hw : num_threads);
   for (int w = 1; w < num_threads_; ++w) workers_.emplace_back([this, w] { WorkerLoop(w); });
@@ -33,18 +50,30 @@ VectorEnv::~VectorEnv() {
   for (auto& t : workers_) t.join();
 }
 
+// Worker `worker` always takes indices worker, worker + T, ... so which
+// thread runs an environment is fixed; an exception stays with its index
+// (a throw escaping a pool thread would terminate the process).
+void VectorEnv::RunShare(int worker) {
+  const std::function<void(int)>& job = *job_;
+  for (int i = worker; i < num_envs(); i += num_threads_) {
+    try {
+      job(i);
+    } catch (...) {
+      errors_[static_cast<size_t>(i)] = std::current_exception();
+    }
+  }
+}
+
 void VectorEnv::WorkerLoop(int worker) {
   long seen = 0;
   for (;;) {
-    const std::function<void(int)>* job = nullptr;
     {
       std::unique_lock<std::mutex> lock(mu_);
       start_cv_.wait(lock, [&] { return stop_ || generation_ != seen; });
       if (stop_) return;
       seen = generation_;
-      job = job_;
     }
-    for (int i = worker; i < num_envs(); i += num_threads_) (*job)(i);
+    RunShare(worker);
     {
       std::lock_guard<std::mutex> lock(mu_);
       if (--pending_ == 0) done_cv_.notify_one();
@@ -53,72 +82,103 @@ void VectorEnv::WorkerLoop(int worker) {
 }
 
 void VectorEnv::ParallelFor(const std::function<void(int)>& fn) {
-  if (num_threads_ == 1) {
-    for (int i = 0; i < num_envs(); ++i) fn(i);
-    return;
-  }
+  std::fill(errors_.begin(), errors_.end(), nullptr);
   {
     std::lock_guard<std::mutex> lock(mu_);
     job_ = &fn;
     pending_ = num_threads_ - 1;
     ++generation_;
   }
-  start_cv_.notify_all();
-  for (int i = 0; i < num_envs(); i += num_threads_) fn(i);  // this thread is worker 0
-  std::unique_lock<std::mutex> lock(mu_);
-  done_cv_.wait(lock, [&] { return pending_ == 0; });
-  job_ = nullptr;
+  if (num_threads_ > 1) start_cv_.notify_all();
+  RunShare(0);  // the calling thread is worker 0
+  {
+    std::unique_lock<std::mutex> lock(mu_);
+    done_cv_.wait(lock, [&] { return pending_ == 0; });
+    job_ = nullptr;
+  }
+  for (const auto& e : errors_) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
+void VectorEnv::RecordReset(int i) {
+  const size_t u = static_cast<size_t>(i);
+  envs_[u]->CopyObservation(obs_.data() + u * static_cast<size_t>(spec().obs_dim));
+  rewards_[u] = 0.0;
+  std::fill_n(reward_terms_.begin() + static_cast<std::ptrdiff_t>(u * kNumRewardTerms), kNumRewardTerms, 0.0);
+  terminated_[u] = truncated_[u] = 0;
 }
 
 void VectorEnv::Reset(std::optional<uint64_t> seed) {
-  const int dim = spec().obs_dim;
+  auto lock = ExclusiveCall(call_mu_);
+  was_reset_ = false;
   ParallelFor([&](int i) {
-    CrashEnv& e = *envs_[static_cast<size_t>(i)];
-    e.Reset(seed ? std::optional<uint64_t>(*seed + static_cast<uint64_t>(i)) : std::nullopt);
-    e.CopyObservation(obs_.data() + static_cast<size_t>(i) * dim);
-    rewards_[static_cast<size_t>(i)] = 0.0;
-    terminated_[static_cast<size_t>(i)] = truncated_[static_cast<size_t>(i)] = 0;
+    envs_[static_cast<size_t>(i)]->Reset(seed ? std::optional<uint64_t>(*seed + static_cast<uint64_t>(i))
+                                              : std::nullopt);
+    RecordReset(i);
+  });
+  was_reset_ = true;
+}
+
+void VectorEnv::Reset(const std::vector<uint64_t>& seeds) {
+  if (seeds.size() != envs_.size()) {
+    throw std::invalid_argument("seeds: expected " + std::to_string(num_envs()) + " seeds, got " +
+                                std::to_string(seeds.size()));
+  }
+  auto lock = ExclusiveCall(call_mu_);
+  was_reset_ = false;
+  ParallelFor([&](int i) {
+    envs_[static_cast<size_t>(i)]->Reset(seeds[static_cast<size_t>(i)]);
+    RecordReset(i);
   });
   was_reset_ = true;
 }
 
 void VectorEnv::StepOne(int i, const float* action) {
   const size_t u = static_cast<size_t>(i);
-  const int dim = spec().obs_dim;
   CrashEnv& e = *envs_[u];
-  float* out = obs_.data() + u * dim;
   if (e.needs_reset()) {  // kNextStep: the step after the end is the reset
     e.Reset();
-    e.CopyObservation(out);
-    rewards_[u] = 0.0;
-    terminated_[u] = truncated_[u] = 0;
+    RecordReset(i);
     return;
   }
   e.Step(action, static_cast<size_t>(spec().action_dim));
   rewards_[u] = e.reward();
+  std::copy(e.info().reward_terms.begin(), e.info().reward_terms.end(),
+            reward_terms_.begin() + static_cast<std::ptrdiff_t>(u * kNumRewardTerms));
   terminated_[u] = e.terminated();
   truncated_[u] = e.truncated();
-  if (mode_ == AutoresetMode::kSameStep && e.needs_reset()) {
-    e.CopyObservation(final_obs_.data() + u * dim);
-    e.Reset();
+  const size_t dim = static_cast<size_t>(spec().obs_dim);
+  if (e.needs_reset()) {
+    final_infos_[u] = e.info();
+    if (mode_ == AutoresetMode::kSameStep) {
+      e.CopyObservation(final_obs_.data() + u * dim);
+      e.Reset();
+    }
   }
-  e.CopyObservation(out);
+  e.CopyObservation(obs_.data() + u * dim);
 }
 
 void VectorEnv::Step(const float* actions, size_t size) {
-  if (!was_reset_) throw std::logic_error("Step() before Reset(): call Reset() first");
+  auto lock = ExclusiveCall(call_mu_);
+  if (!was_reset_) throw std::logic_error("Step() needs Reset() first (never reset, or the last call failed)");
   const int adim = spec().action_dim;
   if (size != static_cast<size_t>(num_envs()) * adim) {
     throw std::invalid_argument("actions: expected " + std::to_string(num_envs()) + " x " + std::to_string(adim) +
                                 " values, got " + std::to_string(size));
   }
+  if (actions == nullptr) throw std::invalid_argument("actions: null pointer");
   for (size_t k = 0; k < size; ++k) {
     if (!std::isfinite(actions[k])) {
       throw std::invalid_argument("actions[" + std::to_string(k / adim) + "][" + std::to_string(k % adim) +
-                                  "]: not a finite number");
+                                  "]: not a finite number (" + std::to_string(actions[k]) + ")");
     }
   }
+  // A failure part-way leaves some environments stepped and others not;
+  // Reset() is then the only way on.
+  was_reset_ = false;
   ParallelFor([&](int i) { StepOne(i, actions + static_cast<size_t>(i) * adim); });
+  was_reset_ = true;
 }
 
 }  // namespace accsim

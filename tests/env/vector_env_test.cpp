@@ -94,8 +94,32 @@ TEST(VectorEnvTest, SameStepAutoresetKeepsTheFinalObservation) {
   EXPECT_EQ(v.truncated()[0], 1);
   const int dim = v.spec().obs_dim;
   EXPECT_EQ(0, std::memcmp(v.final_observations(), single.observation(), sizeof(float) * dim));
+  // The new episode has begun, but the ended one's statistics are kept.
+  EXPECT_EQ(v.env(0).info().episode_steps, 0);
+  EXPECT_EQ(v.final_info(0).episode_steps, 10);
+  EXPECT_TRUE(v.final_info(0).time_limit);
+  EXPECT_EQ(v.final_info(0).episode_return, single.info().episode_return);
   single.Reset();
   EXPECT_EQ(0, std::memcmp(v.observations(), single.observation(), sizeof(float) * dim));
+}
+
+TEST(VectorEnvTest, PerEnvironmentSeedsAndRewardTerms) {
+  VectorEnv a(3, CrashEnvConfig{}, Examples(), 2), b(3, CrashEnvConfig{}, Examples(), 1);
+  a.Reset(40);
+  b.Reset(std::vector<uint64_t>{40, 41, 42});
+  const int dim = a.spec().obs_dim;
+  EXPECT_EQ(0, std::memcmp(a.observations(), b.observations(), sizeof(float) * 3 * dim));
+  EXPECT_THROW(b.Reset(std::vector<uint64_t>{1, 2}), std::invalid_argument);
+  b.Reset(std::vector<uint64_t>{40, 41, 42});
+  for (int t = 0; t < 40; ++t) {
+    const auto act = Actions(3, t);
+    a.Step(act.data(), act.size());
+    for (int i = 0; i < 3; ++i) {
+      double sum = 0.0;
+      for (int k = 0; k < kNumRewardTerms; ++k) sum += a.reward_terms()[i * kNumRewardTerms + k];
+      EXPECT_NEAR(sum, a.rewards()[i], 1e-9);
+    }
+  }
 }
 
 TEST(VectorEnvTest, BadActionsAreRejectedBeforeAnythingSteps) {

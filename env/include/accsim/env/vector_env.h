@@ -11,12 +11,20 @@
 //    convention).
 // Determinism: each environment's results depend only on its own seed
 // (Reset(seed) gives environment i the seed `seed + i`), never on the
-// number of threads or on scheduling.
-// Thread-safety: call from one thread at a time; the pool is internal.
+// number of threads or on scheduling: the split of indices over threads is
+// a fixed stride, and every environment writes only its own rows.
+// Errors: an exception thrown while stepping or resetting environment i is
+// caught on its thread and rethrown from Step()/Reset() on the caller's
+// thread (the lowest failing index, so the error does not depend on timing).
+// Thread-safety: Reset() and Step() must not overlap; a second caller gets
+// std::logic_error instead of a data race. The output buffers are owned by
+// the VectorEnv, stay at the same address for its lifetime, and are
+// overwritten by every Reset()/Step().
 #pragma once
 
 #include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -46,6 +54,8 @@ class VectorEnv {
 
   // Resets every environment; with a seed, environment i gets seed + i.
   void Reset(std::optional<uint64_t> seed = std::nullopt);
+  // One seed per environment (`seeds.size() == num_envs`).
+  void Reset(const std::vector<uint64_t>& seeds);
   // `actions` is [num_envs, action_dim] row-major. Validates every element
   // first (throws std::invalid_argument naming env and element, stepping
   // nothing), then steps all environments in parallel.
@@ -55,22 +65,35 @@ class VectorEnv {
   const double* rewards() const { return rewards_.data(); }
   const uint8_t* terminated() const { return terminated_.data(); }
   const uint8_t* truncated() const { return truncated_.data(); }
+  // [num_envs, kNumRewardTerms] weighted reward terms of the last step
+  // (row sums equal rewards()); zeros after a reset.
+  const double* reward_terms() const { return reward_terms_.data(); }
   // kSameStep: the last observation of environments that ended this step.
   const float* final_observations() const { return final_obs_.data(); }
+  // The info of environment i's last step that ended an episode (either
+  // mode; under kSameStep env(i).info() already belongs to the new episode).
+  // Valid from that step until the environment's next episode ends.
+  const StepInfo& final_info(int i) const { return final_infos_.at(static_cast<size_t>(i)); }
   const CrashEnv& env(int i) const { return *envs_.at(static_cast<size_t>(i)); }
 
  private:
   void ParallelFor(const std::function<void(int)>& fn);
+  void RunShare(int worker);
   void WorkerLoop(int worker);
   void StepOne(int i, const float* action);
+  void RecordReset(int i);
 
   std::vector<std::unique_ptr<CrashEnv>> envs_;
   AutoresetMode mode_;
   int num_threads_ = 1;
   std::vector<float> obs_, final_obs_;
   std::vector<double> rewards_;
+  std::vector<double> reward_terms_;
   std::vector<uint8_t> terminated_, truncated_;
+  std::vector<StepInfo> final_infos_;
+  std::vector<std::exception_ptr> errors_;  // per environment, from the last ParallelFor
   bool was_reset_ = false;
+  std::mutex call_mu_;  // held by Reset()/Step(); overlapping calls are refused
 
   // Thread pool: workers wait for a new generation, run their share of
   // indices (a fixed stride, so the split is deterministic), then report.
