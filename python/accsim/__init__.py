@@ -14,4 +14,6 @@ from accsim.vector import CrashVectorEnv, make_vec
 __all__ = ["CrashEnv", "CrashVectorEnv", "make_vec", "bundled_scenarios"]
 
 if "accsim/Crash-v0" not in gymnasium.registry:
-    gymnasium.register(id="accsim/Crash-v0", entry_point="accsim.env:CrashEnv")
+    # gymnasium.make_vec uses the C++ VectorEnv unless vectorization_mode says otherwise.
+    gymnasium.register(id="accsim/Crash-v0", entry_point="accsim.env:CrashEnv",
+                       vector_entry_point="accsim.vector:CrashVectorEnv")

@@ -49,6 +49,7 @@ class CrashEnv(gymnasium.Env):
         self.observation_space, self.action_space = spaces_from_spec(spec)
         self.obs_names = list(spec.obs_names)
         self.reward_terms = list(spec.reward_terms)
+        self._action_names = list(spec.action_names)
         self.metadata = dict(self.metadata, render_fps=round(1.0 / spec.policy_dt))
         self.render_mode = render_mode
         self._renderer = _core.Renderer() if render_mode == "rgb_array" else None
@@ -77,11 +78,18 @@ class CrashEnv(gymnasium.Env):
 
     def step(self, action):
         a = np.asarray(action)
-        if a.shape != (2,):
-            raise ValueError(f"action: expected shape (2,), got {a.shape}")
-        if not np.issubdtype(a.dtype, np.number) or np.issubdtype(a.dtype, np.complexfloating):
+        if a.shape != self.action_space.shape:
+            raise ValueError(f"action: expected shape {self.action_space.shape}, got {a.shape}")
+        if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.number) or np.issubdtype(a.dtype, np.complexfloating):
             raise ValueError(f"action: expected real numbers, got dtype {a.dtype}")
-        obs, reward, terminated, truncated, info = self._env.step(a.astype(np.float32, copy=False))
+        bad = np.flatnonzero(~np.isfinite(a))
+        if bad.size:
+            k = int(bad[0])
+            raise ValueError(f"action[{k}] ({self._action_names[k]}): not a finite number ({a[k]!r})")
+        # Finite values beyond float32's range would turn into inf in the
+        # cast; the core clips to [-1, 1] (and counts it) anyway.
+        a = np.clip(a, -1e6, 1e6).astype(np.float32)
+        obs, reward, terminated, truncated, info = self._env.step(a)
         if terminated or truncated:
             info["episode"] = {"r": info["episode_return"], "l": info["episode_steps"], "t": info["time"]}
         return obs, float(reward), bool(terminated), bool(truncated), info

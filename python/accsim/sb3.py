@@ -3,6 +3,7 @@
 ``info["terminal_observation"]``)."""
 from __future__ import annotations
 
+import time
 from typing import Any, Sequence
 
 import numpy as np
@@ -16,14 +17,27 @@ __all__ = ["CrashSB3VecEnv"]
 
 
 class CrashSB3VecEnv(VecEnv):
+    """``num_envs`` crash environments stepped by the C++ ``VectorEnv`` (GIL
+    released), seen by SB3 as a ``VecEnv``.
+
+    The core runs in SAME_STEP autoreset mode here, which is what SB3
+    expects: an environment whose episode ended is reset within the step,
+    the returned observation is the new episode's first, and the last one
+    is in ``infos[i]["terminal_observation"]``; ``TimeLimit.truncated`` marks
+    time-limit ends so SAC bootstraps through them. ``reset()`` seeds
+    environment i with ``seed + i`` and moves ``seed`` on by ``num_envs``.
+    Observations are copied out of the core's buffer (SB3 keeps them).
+    """
+
     def __init__(self, num_envs: int, scenario: str | Sequence[str] | None = None, suite: str | None = None,
                  config: Any = None, num_threads: int = 0, seed: int = 0):
         yaml_path, json_text = config_args(config)
         paths = scenario_paths(scenario, suite)
         self._vec = _core.VectorEnv(int(num_envs), paths, yaml_path, json_text, int(num_threads), True)
-        obs_space, act_space = spaces_from_spec(_core.CrashEnv(paths[:1], yaml_path, json_text).spec)
+        obs_space, act_space = spaces_from_spec(self._vec.spec)
         super().__init__(int(num_envs), obs_space, act_space)
         self._seed = seed
+        self._t_start = time.time()
         self._actions: np.ndarray | None = None
 
     def reset(self):
@@ -41,7 +55,11 @@ class CrashSB3VecEnv(VecEnv):
         for i in np.flatnonzero(done):
             infos[i]["terminal_observation"] = self._vec.final_observations[i].copy()
             infos[i]["TimeLimit.truncated"] = bool(self._vec.truncated[i]) and not bool(self._vec.terminated[i])
-            infos[i]["collision"] = self._vec.collided(int(i))
+            final = self._vec.final_info(int(i))
+            infos[i]["collision"] = final["collision"]
+            # What SB3's Monitor would add: the logger's ep_rew_mean/ep_len_mean.
+            infos[i]["episode"] = {"r": final["episode_return"], "l": final["episode_steps"],
+                                   "t": round(time.time() - self._t_start, 6)}
         return self._vec.observations.copy(), self._vec.rewards.astype(np.float32), done, infos
 
     def close(self) -> None:

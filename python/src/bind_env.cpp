@@ -14,9 +14,21 @@ namespace py = pybind11;
 namespace accsim::python {
 namespace {
 
-
 py::dict InfoDict(const CrashEnv& env) {
-  const StepInfo& i = env.info();
+  py::dict d = StepInfoDict(env.info());
+  d["scenario"] = env.scenario().name;
+  return d;
+}
+
+py::array_t<float> ObsCopy(const CrashEnv& env) {
+  py::array_t<float> a(env.spec().obs_dim);
+  env.CopyObservation(a.mutable_data());
+  return a;
+}
+
+}  // namespace
+
+py::dict StepInfoDict(const StepInfo& i) {
   py::dict terms;
   for (int t = 0; t < kNumRewardTerms; ++t) terms[RewardTermName(t)] = i.reward_terms[static_cast<size_t>(t)];
   py::dict d;
@@ -45,17 +57,8 @@ py::dict InfoDict(const CrashEnv& env) {
   d["episode_steps"] = i.episode_steps;
   d["episode_return"] = i.episode_return;
   d["scenario_index"] = i.scenario_index;
-  d["scenario"] = env.scenario().name;
   return d;
 }
-
-py::array_t<float> ObsCopy(const CrashEnv& env) {
-  py::array_t<float> a(env.spec().obs_dim);
-  env.CopyObservation(a.mutable_data());
-  return a;
-}
-
-}  // namespace
 
 CrashEnvConfig LoadConfig(const std::string& yaml_path, const std::string& json_text) {
   if (!yaml_path.empty()) return LoadCrashEnvConfig(yaml_path);
@@ -93,7 +96,10 @@ void DefineEnv(py::module_& m) {
       .def(
           "reset",
           [](CrashEnv& env, std::optional<uint64_t> seed, int scenario_index) {
-            env.Reset(seed, scenario_index);
+            {
+              py::gil_scoped_release release;
+              env.Reset(seed, scenario_index);
+            }
             return py::make_tuple(ObsCopy(env), InfoDict(env));
           },
           py::arg("seed") = py::none(), py::arg("scenario_index") = -1)
@@ -105,7 +111,10 @@ void DefineEnv(py::module_& m) {
                                     ",), got " + std::to_string(action.ndim()) + "-d array of " +
                                     std::to_string(action.size()) + " values");
             }
-            env.Step(action.data(), static_cast<size_t>(action.size()));
+            {
+              py::gil_scoped_release release;
+              env.Step(action.data(), static_cast<size_t>(action.size()));
+            }
             return py::make_tuple(ObsCopy(env), env.reward(), env.terminated(), env.truncated(), InfoDict(env));
           },
           py::arg("action"))
@@ -127,19 +136,6 @@ void DefineEnv(py::module_& m) {
         r.Render(env, img.mutable_data());
         return img;
       });
-
-  py::register_exception_translator([](std::exception_ptr p) {
-    try {
-      if (p) std::rethrow_exception(p);
-    } catch (const std::logic_error& e) {
-      // std::invalid_argument (bad input) is a logic_error too.
-      if (dynamic_cast<const std::invalid_argument*>(&e)) {
-        PyErr_SetString(PyExc_ValueError, e.what());
-      } else {
-        PyErr_SetString(PyExc_RuntimeError, e.what());
-      }
-    }
-  });
 }
 
 }  // namespace accsim::python

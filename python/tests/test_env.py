@@ -116,3 +116,40 @@ def test_step_after_episode_end_is_an_error():
     assert trunc
     with pytest.raises(RuntimeError, match="Reset"):
         env.step(np.zeros(2, dtype=np.float32))
+
+
+def test_bad_action_errors_name_the_element():
+    env = accsim.CrashEnv()
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"action\[1\] \(steer"):
+        env.step(np.array([0.0, np.nan]))
+    with pytest.raises(ValueError, match="dtype"):
+        env.step(np.array([True, False]))
+    # Finite but beyond float32: clipped into [-1, 1] like any large value.
+    _, _, _, _, info = env.step(np.array([1e300, -1e300]))
+    assert info["clipped_actions"] == 2
+
+
+def test_gymnasium_make_passes_scenario_suite_and_config(tmp_path):
+    import json
+    lines = [json.dumps(json.load(open(p))) for p in accsim.bundled_scenarios()]
+    suite = tmp_path / "suite.jsonl"
+    suite.write_text("\n".join(lines) + "\n")
+    env = gymnasium.make("accsim/Crash-v0", suite=str(suite), config={"num_rays": 4})
+    assert env.unwrapped.num_scenarios == 4
+    assert env.observation_space.shape[0] == 69 + 4
+    env.reset(seed=0, options={"scenario_index": 3})
+    with pytest.raises(ValueError, match="options"):
+        env.reset(options={"scenario": 1})
+
+
+def test_config_from_a_yaml_file(tmp_path):
+    from pathlib import Path
+    env = accsim.CrashEnv(config=Path(__file__).resolve().parents[2] / "configs" / "env.yaml")
+    env.reset(seed=0)
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("physics_hz: 55\n")
+    with pytest.raises(ValueError, match="physics_hz"):
+        accsim.CrashEnv(config=str(bad))
+    with pytest.raises(TypeError, match="config"):
+        accsim.CrashEnv(config=3)

@@ -39,3 +39,31 @@ def test_train_example_trains_saves_reloads_and_predicts(tmp_path):
     assert result.returncode == 0, result.stderr[-2000:]
     assert model.exists()
     assert "reloaded model predicts" in result.stdout
+
+
+def test_sb3_vec_env_matches_single_envs_with_sb3_semantics():
+    """Same seeds: the batched env under SB3's same-step autoreset equals
+    single envs reset by hand, terminal observations included."""
+    config = {"time_limit": 0.8, "npc_time_jitter": 0.2}
+    vec = CrashSB3VecEnv(2, config=config, seed=7, num_threads=2)
+    singles = [accsim.CrashEnv(config=config) for _ in range(2)]
+    obs = vec.reset()
+    for i, e in enumerate(singles):
+        assert np.array_equal(obs[i], e.reset(seed=7 + i)[0])
+    rng = np.random.default_rng(1)
+    ends = 0
+    for _ in range(20):
+        act = rng.uniform(-1, 1, (2, 2)).astype(np.float32)
+        vec.step_async(act)
+        obs, rewards, dones, infos = vec.step_wait()
+        for i, e in enumerate(singles):
+            o, r, term, trunc, info = e.step(act[i])
+            assert rewards[i] == np.float32(r) and dones[i] == (term or trunc)
+            if term or trunc:
+                ends += 1
+                assert np.array_equal(infos[i]["terminal_observation"], o)
+                assert infos[i]["TimeLimit.truncated"] == (trunc and not term)
+                assert infos[i]["episode"]["r"] == info["episode"]["r"]
+                o, _ = e.reset()
+            assert np.array_equal(obs[i], o)
+    assert ends >= 4
