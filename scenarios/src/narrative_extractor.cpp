@@ -4,190 +4,402 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <map>
 #include <regex>
+#include <set>
+#include <utility>
+#include <vector>
 
 namespace accsim {
 namespace {
 
 constexpr double kMphToMps = 0.44704;
 constexpr double kKmhToMps = 1.0 / 3.6;
+// Sentences longer than this are cut (at a comma when possible): std::regex
+// backtracks recursively, so bounded inputs keep every rule cheap and safe.
+constexpr size_t kMaxSentence = 600;
+constexpr int kMaxVehicles = 9;
 
-// Lower-case ASCII; every other byte (binary, UTF-8) becomes a space so the
-// rules below only ever see printable text.
-std::string Normalise(std::string_view in) {
-  std::string s;
-  s.reserve(in.size());
-  for (unsigned char c : in) {
-    if (c == '\n' || c == '\t' || c == '\r') s += ' ';
-    else if (c < 32 || c > 126) s += ' ';
-    else s += static_cast<char>(std::tolower(c));
+using std::regex;
+using std::smatch;
+using std::string;
+
+bool Has(const string& s, const regex& re) { return std::regex_search(s, re); }
+
+// regex_replace with a callback (std::regex has none).
+string ReplaceWith(const string& s, const regex& re, const std::function<string(const smatch&)>& fn) {
+  string out;
+  auto begin = s.cbegin();
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), re); it != std::sregex_iterator(); ++it) {
+    out.append(begin, (*it)[0].first);
+    out += fn(*it);
+    begin = (*it)[0].second;
   }
-  // Number words and vehicle references in one canonical form.
-  s = std::regex_replace(s, std::regex(R"(\bone[- ]way\b)"), "oneway");
-  static const std::array<std::pair<std::regex, const char*>, 14> kRewrites = {{
-      {std::regex(R"(\bnon[- ]?contact\b)"), "noncontact"},
-      {std::regex(R"(\bvehicle\s*(?:number\s*|no\.?\s*|#\s*)?one\b)"), "v1"},
-      {std::regex(R"(\bvehicle\s*(?:number\s*|no\.?\s*|#\s*)?two\b)"), "v2"},
-      {std::regex(R"(\bvehicle\s*(?:number\s*|no\.?\s*|#\s*)?three\b)"), "v3"},
-      {std::regex(R"(\bvehicle\s*(?:number\s*|no\.?\s*|#\s*)?four\b)"), "v4"},
-      {std::regex(R"(\b(?:vehicle|veh\.?|v)\s*(?:number\s*|no\.?\s*|#\s*|-\s*)?([1-9])\b)"), "v$1"},
-      {std::regex(R"(\bone\b)"), "1"},
-      {std::regex(R"(\btwo\b)"), "2"},
-      {std::regex(R"(\bthree\b)"), "3"},
-      {std::regex(R"(\bfour\b)"), "4"},
-      {std::regex(R"(\bfive\b)"), "5"},
-      {std::regex(R"(\bsix\b)"), "6"},
-      {std::regex(R"(\bseven\b)"), "7"},
-      {std::regex(R"(\beight\b)"), "8"},
+  out.append(begin, s.cend());
+  return out;
+}
+
+int NumberWord(const string& w) {
+  static const std::map<string, int> kWords = {
+      {"one", 1},     {"two", 2},       {"three", 3},    {"four", 4},     {"five", 5},     {"six", 6},
+      {"seven", 7},   {"eight", 8},     {"nine", 9},     {"ten", 10},     {"eleven", 11},  {"twelve", 12},
+      {"thirteen", 13}, {"fourteen", 14}, {"fifteen", 15}, {"sixteen", 16}, {"seventeen", 17}, {"eighteen", 18},
+      {"nineteen", 19}, {"twenty", 20},  {"thirty", 30},   {"forty", 40},   {"fifty", 50},   {"sixty", 60},
+      {"seventy", 70}, {"eighty", 80},   {"ninety", 90}};
+  const auto it = kWords.find(w);
+  return it == kWords.end() ? -1 : it->second;
+}
+
+// Lower-case ASCII, one space between words; every other byte (binary,
+// UTF-8) becomes a space so the rules only ever see printable text. Vehicle
+// references and numbers get one canonical form ("v2", "45").
+string Normalise(std::string_view in) {
+  string s;
+  s.reserve(in.size());
+  bool space = false;
+  for (unsigned char c : in) {
+    const bool blank = c < 33 || c > 126;
+    if (blank) {
+      if (!space && !s.empty()) s += ' ';
+      space = true;
+    } else {
+      s += static_cast<char>(std::tolower(c));
+      space = false;
+    }
+  }
+  static const regex kMph(R"(\bm\.p\.h\.?|\bmiles per hour\b|\bmiles an hour\b)");
+  static const regex kKmh(R"(\bkm\s*/\s*hr?\b|\bkph\b|\bkmph\b|\bkm/h\b|\bkilometers per hour\b|\bkilometres per hour\b|\bkm per hour\b)");
+  static const regex kOneWay(R"(\bone[- ]way\b)");
+  static const regex kNonContact(R"(\bnon[- ]?contact\b)");
+  s = std::regex_replace(s, kMph, "mph");
+  s = std::regex_replace(s, kKmh, "kmh");
+  s = std::regex_replace(s, kOneWay, "oneway");
+  s = std::regex_replace(s, kNonContact, "noncontact");
+  // Number words: "forty-five" -> 45, "two" -> 2.
+  static const regex kCompound(
+      R"(\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b)");
+  s = ReplaceWith(s, kCompound, [](const smatch& m) { return std::to_string(NumberWord(m[1]) + NumberWord(m[2])); });
+  static const regex kWord(
+      R"(\b(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|thirteen|fourteen|fifteen|sixteen|seventeen|eighteen|nineteen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)\b)");
+  s = ReplaceWith(s, kWord, [](const smatch& m) { return std::to_string(NumberWord(m[1])); });
+  static const std::array<std::pair<regex, const char*>, 5> kOrdinals = {{
+      {regex(R"(\bfirst\b)"), "1st"},
+      {regex(R"(\bsecond\b)"), "2nd"},
+      {regex(R"(\bthird\b)"), "3rd"},
+      {regex(R"(\bfourth\b)"), "4th"},
+      {regex(R"(\bfifth\b)"), "5th"},
   }};
-  for (const auto& [re, to] : kRewrites) s = std::regex_replace(s, re, to);
+  for (const auto& [re, to] : kOrdinals) s = std::regex_replace(s, re, to);
+  // Vehicle references: "vehicle #1", "vehicle no. 2", "veh. 3", "v-1", "unit 2".
+  static const regex kVehicle(
+      R"(\b(?:vehicle|veh\.?|unit|v)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|lanes?|year|yr)))");
+  s = std::regex_replace(s, kVehicle, "v$1");
+  // "v1 (v1 - case vehicle)" and "the ford taurus (v1)" are one reference.
+  static const regex kRepeat(R"(\bv([1-9])\s*\(\s*v\1\b[^()]{0,40}\))");
+  s = std::regex_replace(s, kRepeat, "v$1");
+  static const regex kNamed(R"(\bthe\s+(?:(?:19|20)\d\d\s+)?[a-z][a-z0-9/&'. -]{1,40}?\s*\(\s*v([1-9])\s*\))");
+  s = std::regex_replace(s, kNamed, "v$1");
   return s;
 }
 
-// Sentences: split at '.', '!' or '?' unless between digits ("2.5"),
-// so run-together sentences ("roadway.The driver") split too.
-std::vector<std::string> Sentences(const std::string& s) {
-  std::vector<std::string> out;
-  std::string cur;
+enum class Kind { kNarrative, kStatement, kCoding, kPeople };
+
+struct Ref {
+  size_t pos;
+  int vehicle;
+};
+
+struct Sentence {
+  string text;
+  Kind kind = Kind::kNarrative;
+  std::vector<Ref> refs;
+  int focus = 0;  // the vehicle the sentence is about: its first reference, else the previous sentence's
+};
+
+std::vector<Ref> RefsIn(const string& s) {
+  static const regex kRef(R"(\bv([1-9])\b)");
+  std::vector<Ref> out;
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), kRef); it != std::sregex_iterator(); ++it) {
+    out.push_back({static_cast<size_t>(it->position()), (*it)[1].str()[0] - '0'});
+  }
+  return out;
+}
+
+Kind KindOf(const string& s) {
+  static const regex kCoding(
+      R"(critical\s*(?:pre-?\s*crash|precrash|event|reason)|associated factor|\bwas coded\b|\bcoded (?:as|to|for)\b|\bwere coded\b)");
+  static const regex kPeople(
+      R"(injur|transported|year[- ]old|years old|\b\d+ year\b|medication|lenses|glasses|eyesight|fatigue|treatment|)"
+      R"(hospital|trauma|ambulance|rested|health|alcohol|drugs|\bcited\b|citation|summons|ticket|interview|airbag|air bag|)"
+      R"(seat ?belt|belted|occupant|passenger|his way|her way|going home|heading home|errand|medical|license|)"
+      R"(towed|driven from the scene|driven away|fled|contact lens|pregnan)");
+  static const regex kStatement(
+      R"(\b(?:stated|said|says|states|indicated|reported|advised|according to|recalled|estimated|told|admitted|claimed)\b)");
+  if (Has(s, kCoding)) return Kind::kCoding;
+  if (Has(s, kStatement)) return Kind::kStatement;
+  if (Has(s, kPeople)) return Kind::kPeople;
+  return Kind::kNarrative;
+}
+
+// Sentences split at '.', '!', '?' or ';' unless inside a number ("2.5"),
+// after a common abbreviation, or after a single letter ("u.s."); run-on
+// sentences ("roadway.The driver") split too.
+std::vector<string> SplitSentences(const string& s) {
+  static const std::set<string> kAbbrev = {"approx", "no", "st", "ave", "mr", "mrs", "ms", "dr", "vs", "etc",
+                                           "hwy", "rd", "ft", "jr", "sr", "blvd", "e.g", "i.e", "est", "veh"};
+  std::vector<string> out;
+  string cur;
+  auto flush = [&]() {
+    size_t a = cur.find_first_not_of(' ');
+    if (a != string::npos) {
+      string t = cur.substr(a);
+      // Bound the sentence length; cut at the last comma before the limit.
+      while (t.size() > kMaxSentence) {
+        size_t cut = t.rfind(", ", kMaxSentence);
+        if (cut == string::npos || cut < kMaxSentence / 3) cut = t.rfind(' ', kMaxSentence);
+        if (cut == string::npos || cut == 0) cut = kMaxSentence;
+        out.push_back(t.substr(0, cut) + " ");
+        t = t.substr(cut);
+      }
+      out.push_back(t + " ");
+    }
+    cur.clear();
+  };
   for (size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
-    const bool decimal = c == '.' && i > 0 && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i - 1])) &&
-                         std::isdigit(static_cast<unsigned char>(s[i + 1]));
-    if ((c == '.' || c == '!' || c == '?' || c == ';') && !decimal) {
-      if (cur.find_first_not_of(' ') != std::string::npos) out.push_back(cur + " ");
-      cur.clear();
+    if (c == '.' || c == '!' || c == '?' || c == ';') {
+      const bool digit_before = i > 0 && std::isdigit(static_cast<unsigned char>(s[i - 1]));
+      const bool digit_after = i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1]));
+      if (c == '.' && digit_before && digit_after) {
+        cur += c;
+        continue;
+      }
+      if (c == '.') {
+        size_t w = cur.size();
+        while (w > 0 && (std::isalpha(static_cast<unsigned char>(cur[w - 1])) || cur[w - 1] == '.')) --w;
+        const string word = cur.substr(w);
+        if (kAbbrev.count(word) || word.size() == 1) {
+          cur += c;
+          continue;
+        }
+      }
+      flush();
     } else {
       cur += c;
     }
   }
-  if (cur.find_first_not_of(' ') != std::string::npos) out.push_back(cur + " ");
+  flush();
   return out;
 }
 
-// Sentences about people rather than vehicle motion.
-bool AboutPeople(const std::string& s) {
-  static const std::regex re(
-      R"(critical|associated factor|injur|transported|year[- ]old|years old|medication|lenses|wearing|fatigue|)"
-      R"(treatment|hospital|rested|health|alcohol|cited|police report|interview|his way|her way|going home|heading home|)"
-      R"(unable|contact lens)");
-  return std::regex_search(s, re);
-}
+// ---------------------------------------------------------------- vehicles
 
-bool IsContactSentence(const std::string& s) {
-  static const std::regex re(
-      R"(\b(contact(ed|ing)?|struck|strik(e|es|ing)|impact(ed|ing)?|collided|collision with|hit|crashed into|rear[- ]ended|sideswiped)\b)");
-  return std::regex_search(s, re);
-}
-
-std::optional<Compass> DirectionIn(const std::string& s) {
-  static const std::regex re(
-      R"(\b(north|south|east|west)(?:bound|ward)\b|\b(?:travel(?:l)?ing|traveled|travelled|heading|headed|going|proceeding|driving)\s+(north|south|east|west)\b)");
-  std::smatch m;
-  if (!std::regex_search(s, m, re)) return std::nullopt;
-  const std::string w = m[1].matched ? m[1].str() : m[2].str();
-  return CompassFromString(w);
-}
-
-// The text segments that talk about each vehicle: from a mention of "vN"
-// to the next mention of another vehicle, within a sentence.
-struct Segment {
-  int vehicle;
-  size_t sentence;
-  std::string text;
-};
-
-std::vector<Segment> Segments(const std::vector<std::string>& sentences) {
-  static const std::regex ref(R"(\bv([1-9])\b)");
-  std::vector<Segment> out;
-  for (size_t i = 0; i < sentences.size(); ++i) {
-    const std::string& s = sentences[i];
-    std::vector<std::pair<size_t, int>> marks;
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), ref); it != std::sregex_iterator(); ++it) {
-      marks.emplace_back(static_cast<size_t>(it->position()), std::stoi((*it)[1].str()));
-    }
-    for (size_t k = 0; k < marks.size(); ++k) {
-      const size_t end = k + 1 < marks.size() ? marks[k + 1].first : s.size();
-      if (k + 1 < marks.size() && marks[k + 1].second == marks[k].second) continue;  // merge repeats
-      out.push_back({marks[k].second, i, s.substr(marks[k].first, end - marks[k].first)});
-    }
-  }
-  return out;
-}
-
-Movement MovementIn(const std::string& t) {
-  static const std::regex left(R"(turn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left|left[- ]turn|left\s+onto|turn left)");
-  static const std::regex right(R"(turn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?right|right[- ]turn|right\s+onto)");
-  static const std::regex lanes(R"(chang(?:e|ed|es|ing)\s+lanes?|lane\s+change|changing\s+lanes)");
-  static const std::regex merge(R"(\bmerg(?:e|ed|es|ing)\b)");
-  static const std::regex back(R"(\bback(?:ed|ing)\s+(?:up|out|into|from)|\breversing\b|\bin reverse\b)");
-  static const std::regex pass(R"(\b(?:pass|passed|passing|overtak\w*)\s+(?:a|an|the|v[1-9])\b)");
-  static const std::regex stop(R"(\bstopped\b|\bstationary\b|\bwaiting\b|\bat rest\b|\bparked\b|\bcame to a (?:complete |full )?stop\b)");
-  // Braking is usually the avoidance manoeuvre, not the pre-crash movement.
-  static const std::regex slow(R"(\bslow(?:ed|ing)\b|\bdecelerat\w*)");
-  // "stopped, waiting to turn left": the intention is not the movement.
-  static const std::regex intention(
-      R"(\b(?:wait\w*|to|for|intend\w*(?:\s+on)?|prepar\w*|signal\w*|plann\w*)\s+(?:to\s+)?(?:make\s+|complete\s+)?(?:a\s+|the\s+)?(?:left|right)?[- ]?turn)");
-  const bool stopped = std::regex_search(t, stop);
-  if (stopped && std::regex_search(t, intention)) return Movement::kStopped;
-  if (std::regex_search(t, left)) return Movement::kTurnLeft;
-  if (std::regex_search(t, right)) return Movement::kTurnRight;
-  if (std::regex_search(t, lanes)) return Movement::kChangingLanes;
-  if (std::regex_search(t, merge)) return Movement::kMerging;
-  if (std::regex_search(t, back)) return Movement::kBacking;
-  if (std::regex_search(t, pass)) return Movement::kPassing;
-  if (stopped) return Movement::kStopped;
-  if (std::regex_search(t, slow)) return Movement::kSlowing;
-  return Movement::kUnknown;
-}
-
-int Rank(Movement m) {  // which statement wins when a vehicle does several things
-  switch (m) {
-    case Movement::kTurnLeft:
-    case Movement::kTurnRight: return 6;
-    case Movement::kChangingLanes:
-    case Movement::kMerging:
-    case Movement::kBacking:
-    case Movement::kPassing: return 5;
-    case Movement::kStopped: return 4;
-    case Movement::kSlowing: return 3;
-    case Movement::kStraight: return 1;
-    case Movement::kUnknown: return 0;
-  }
-  return 0;
-}
-
-DamageArea AreaOf(const std::string& words) {
-  const bool front = words.find("front") != std::string::npos;
-  const bool rear = words.find("rear") != std::string::npos || words.find("back") != std::string::npos;
-  const bool left = words.find("left") != std::string::npos;
-  const bool right = words.find("right") != std::string::npos;
-  // Front corners count as the front plane; rear corners as the side
-  // (how investigators code a rear-quarter hit).
-  if (front) return DamageArea::kFront;
-  if (left) return DamageArea::kLeft;
-  if (right) return DamageArea::kRight;
-  if (rear) return DamageArea::kRear;
-  return DamageArea::kUnknown;
-}
-
-VehicleClass ClassOf(const std::string& d) {
-  auto has = [&](const char* w) { return std::regex_search(d, std::regex(w)); };
-  if (has(R"(motorcycle|motorbike|scooter|moped|harley)")) return VehicleClass::kMotorcycle;
-  if (has(R"(\bbus\b|school bus|transit)")) return VehicleClass::kBus;
-  if (has(R"(tractor|semi|trailer|box truck|dump truck|straight truck|freightliner|peterbilt|kenworth|mack\b)"))
-    return VehicleClass::kTruck;
-  if (has(R"(pickup|pick-up|f-?150|f-?250|silverado|sierra|ram\b|tacoma|ranger|tundra|dakota|s-?10\b)"))
-    return VehicleClass::kPickup;
-  if (has(R"(\bvan\b|minivan|caravan|windstar|odyssey|sienna|montana|trans sport|econoline|express|astro)"))
-    return VehicleClass::kVan;
-  if (has(R"(suv|sport utility|utility vehicle|jeep|explorer|blazer|tahoe|suburban|4runner|cr-v|rav4|expedition|durango|trailblazer|escape|pathfinder|yukon)"))
-    return VehicleClass::kSuv;
+VehicleClass ClassOf(const string& d) {
+  static const regex kMotorcycle(R"(motorcycle|motorbike|scooter|moped|harley|kawasaki|\bducati|\byamaha\b.*\b(?:r1|r6)\b)");
+  static const regex kBus(R"(\bbus\b|coach|transit)");
+  static const regex kPickup(
+      R"(pick-?up|\bf-?[1-3]50\b|silverado|\bsierra|\bram\b|\bram \d|tacoma|\branger\b|tundra|dakota|\bs-?10\b|frontier|sonoma|colorado|canyon|avalanche|\bc-?[1-3]500\b|\bk-?[1-3]500\b)");
+  static const regex kTruck(
+      R"(tractor|semi|trailer|\btruck\b|freightliner|peterbilt|kenworth|\bmack\b|international|\bvolvo (?:vn|truck)|\bdump\b|box truck|\bm/h\b|straight truck)");
+  static const regex kVan(
+      R"(\bvan\b|minivan|caravan|voyager|windstar|freestar|odyssey|odessy|sienna|montana|trans ?sport|econoline|e-?series|g-?series|express|astro|vandura|savana|\bquest\b|villager|town (?:&|and) country|uplander|venture|safari|silhouette|\bmpv\b)");
+  static const regex kSuv(
+      R"(\bsuv\b|sport utility|utility vehicle|jeep|explorer|blazer|tahoe|suburban|4-?runner|\bcr-?v\b|rav-?4|expedition|durango|trailblazer|\bescape\b|pathfinder|yukon|envoy|cherokee|wrangler|montero|navajo|sequoia|\bpilot\b|\bmdx\b|forester|highlander|liberty|excursion|rodeo|trooper|bravada|jimmy|sorento|santa fe|xterra|land cruiser|mountaineer|rendezvous|equinox|murano|\belement\b|grand vitara|\bh2\b|hummer|range rover|\bx5\b|\bml ?\d{3}\b)");
+  if (Has(d, kMotorcycle)) return VehicleClass::kMotorcycle;
+  if (Has(d, kBus)) return VehicleClass::kBus;
+  if (Has(d, kPickup)) return VehicleClass::kPickup;
+  if (Has(d, kTruck)) return VehicleClass::kTruck;
+  if (Has(d, kVan)) return VehicleClass::kVan;
+  if (Has(d, kSuv)) return VehicleClass::kSuv;
   return VehicleClass::kCar;
+}
+
+string EscapeRegex(const string& s) {
+  string out;
+  for (char c : s) {
+    if (std::string_view("\\^$.|?*+()[]{}/").find(c) != std::string_view::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+std::optional<Compass> CompassWord(const string& w) {
+  if (w.rfind("north", 0) == 0) return Compass::kNorth;
+  if (w.rfind("south", 0) == 0) return Compass::kSouth;
+  if (w.rfind("east", 0) == 0) return Compass::kEast;
+  if (w.rfind("west", 0) == 0) return Compass::kWest;
+  return std::nullopt;
+}
+
+// The first direction of travel stated in a piece of text about one vehicle.
+std::optional<Compass> DirectionIn(const string& s) {
+  static const regex kDir(
+      R"(\b(north|south|east|west)[- ]?bound\b|\b(?:travel+(?:ing|ed|s)?|heading|headed|going|proceeding|proceeded|driving|moving|approaching from the|turn(?:ing|ed)?)\s+(?:due\s+)?(north|south|east|west)\b(?![/-]?(?:east|west))|\bin an? (north|south|east|west)(?:erly|ern)? direction)");
+  smatch m;
+  if (!std::regex_search(s, m, kDir)) return std::nullopt;
+  for (int g = 1; g <= 3; ++g) {
+    if (m[g].matched) return CompassWord(m[g].str());
+  }
+  return std::nullopt;
 }
 
 bool Opposite(Compass a, Compass b) { return (static_cast<int>(a) + 2) % 4 == static_cast<int>(b); }
 bool Perpendicular(Compass a, Compass b) { return (static_cast<int>(a) + static_cast<int>(b)) % 2 == 1; }
+
+// ------------------------------------------------------------ damage areas
+
+struct AreaWords {
+  bool front = false, rear = false, left = false, right = false;
+  bool any() const { return front || rear || left || right; }
+};
+
+AreaWords ParseArea(const string& w) {
+  AreaWords a;
+  a.front = w.find("front") != string::npos;
+  a.rear = w.find("rear") != string::npos || w.find("back") != string::npos;
+  // In the U.S. the driver sits on the left.
+  a.left = w.find("left") != string::npos || w.find("driver") != string::npos;
+  a.right = w.find("right") != string::npos || w.find("passenger") != string::npos;
+  if (a.left && a.right) a.right = false;
+  return a;
+}
+
+string Detail(const AreaWords& a) {
+  if (a.front && (a.left || a.right)) return a.left ? "front-left" : "front-right";
+  if (a.rear && (a.left || a.right)) return a.left ? "left-rear" : "right-rear";
+  if (a.front) return "front";
+  if (a.rear) return "rear";
+  if (a.left) return "left";
+  if (a.right) return "right";
+  return "";
+}
+
+// ------------------------------------------------------------------ roads
+
+struct RoadStatement {
+  size_t sentence = 0;
+  int owner = 0;                   // vehicle whose segment states it (0: none)
+  std::optional<int> axis;         // 0 = east-west, 1 = north-south, when the phrase names one
+  int total = 0, per_direction = 0, directional = 0;
+  bool one_way = false;
+};
+
+std::optional<int> AxisIn(const string& s) {
+  static const regex kAxis(
+      R"(\b(east|west)[- ]?(?:/|-|and)?\s*(?:west|east)\b|\b(north|south)[- ]?(?:/|-|and)?\s*(?:south|north)\b|\b(north|south|east|west)[- ]?bound\b|\b(n|s)/(?:s|n)\b|\b(e|w)/(?:w|e)\b)");
+  std::optional<int> last;
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), kAxis); it != std::sregex_iterator(); ++it) {
+    const smatch& m = *it;
+    if (m[1].matched || m[5].matched) last = 0;
+    else if (m[2].matched || m[4].matched) last = 1;
+    else if (m[3].matched) last = (m[3].str()[0] == 'e' || m[3].str()[0] == 'w') ? 0 : 1;
+  }
+  return last;
+}
+
+int AxisOf(Compass c) { return (c == Compass::kEast || c == Compass::kWest) ? 0 : 1; }
+
+// -------------------------------------------------------------- movements
+
+struct MovementEvidence {
+  bool stopped = false, stop_cancelled = false, parked = false, leaving_parking = false;
+  bool turn_left = false, turn_right = false, lane_change = false, merge = false, back = false, pass = false;
+  bool slowing = false, straight = false;
+  bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
+  bool coded_lane_change = false, other_says_stopped = false;
+  bool any_narrative() const {
+    return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
+           back || pass || slowing;
+  }
+};
+
+// Reads one piece of text about a vehicle for movement statements.
+void ReadMovement(const string& t, MovementEvidence& e) {
+  static const regex kStopState(
+      R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\bcame to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b)");
+  static const regex kStopThenGo(
+      R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went)\w*)");
+  static const regex kParked(R"(\bparked\b|\bunoccupied\b)");
+  static const regex kLeavingParking(
+      R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
+  static const regex kLeft(
+      R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left\b|\bleft[- ]hand turn|\bleft turn\b|\bturn(?:ed|ing)? left|\b(?:made|make|making)\s+a\s+left\s+(?:onto|into)\b|\bu-?\s?turn)");
+  static const regex kRight(R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?right\b|\bright[- ]hand turn|\bright turn\b|\b(?:made|make|making)\s+a\s+right\s+(?:onto|into)\b)");
+  // An intention is not the movement: "waiting to turn left", "intending to turn".
+  static const regex kIntention(
+      R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn))");
+  static const regex kLaneChange(
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|steered|swerved|veered|drifted|merged|pulled|crossed)\s+(?:\w+\s+){0,3}?into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+  static const regex kMerge(R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from)");
+  static const regex kBack(R"(\bback(?:ed|ing)\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
+  static const regex kPass(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b)");
+  static const regex kSlow(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b)");
+  static const regex kStraight(
+      R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
+  const bool parked = Has(t, kParked);
+  if (parked && !Has(t, kLeavingParking)) e.parked = true;
+  if (Has(t, kLeavingParking)) e.leaving_parking = true;
+  if (Has(t, kStopState) && !parked) {
+    if (Has(t, kStopThenGo)) {
+      e.stop_cancelled = true;
+    } else {
+      e.stopped = true;
+    }
+  }
+  const bool intention = Has(t, kIntention);
+  if (!intention) {
+    if (Has(t, kLeft)) e.turn_left = true;
+    if (Has(t, kRight)) e.turn_right = true;
+  }
+  if (Has(t, kLaneChange)) e.lane_change = true;
+  if (Has(t, kMerge)) e.merge = true;
+  if (Has(t, kBack)) e.back = true;
+  if (Has(t, kPass)) e.pass = true;
+  if (Has(t, kSlow)) e.slowing = true;
+  if (Has(t, kStraight)) e.straight = true;
+}
+
+// NHTSA critical-event wording ("this vehicle traveling, turning left at
+// intersection", "other motor vehicle in lane, other vehicle stopped").
+void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other) {
+  static const regex kSelfLeft(R"(\bthis vehicle\b[^.]{0,40}?\bturning left)");
+  static const regex kSelfRight(R"(\bthis vehicle\b[^.]{0,40}?\bturning right)");
+  static const regex kSelfStraight(
+      R"(\bthis vehicle\b[^.]{0,40}?\b(?:crossing over|passing through|going straight|over the (?:left |right )?lane line|off the edge|control loss|traveling too fast|over the line))");
+  static const regex kSelfBack(R"(\bthis vehicle\b[^.]{0,40}?\bbacking)");
+  static const regex kSelfLane(R"(\bthis vehicle\b[^.]{0,40}?\bchanging lanes)");
+  static const regex kOtherStopped(R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,40}?\bstopped\b)");
+  if (Has(t, kSelfLeft)) self.coded_turn_left = true;
+  if (Has(t, kSelfRight)) self.coded_turn_right = true;
+  if (Has(t, kSelfStraight)) self.coded_straight = true;
+  if (Has(t, kSelfBack)) self.coded_back = true;
+  if (Has(t, kSelfLane)) self.coded_lane_change = true;
+  if (other && Has(t, kOtherStopped)) other->other_says_stopped = true;
+}
+
+std::pair<Movement, Provenance> DecideMovement(const MovementEvidence& n, const MovementEvidence& st) {
+  // Narrative statements first; driver statements only when the narrative is silent.
+  const MovementEvidence& e = n.any_narrative() ? n : st;
+  if (e.parked || n.parked) return {Movement::kStopped, Provenance::kStated};
+  if (e.back || n.coded_back) return {Movement::kBacking, Provenance::kStated};
+  if (e.leaving_parking) return {Movement::kMerging, Provenance::kStated};
+  // A stop before the critical event is the pre-crash movement even when a
+  // turn was intended or begun afterwards (how NASS codes it).
+  if (e.stopped) return {Movement::kStopped, Provenance::kStated};
+  if (e.turn_left || (!e.turn_right && n.coded_turn_left)) return {Movement::kTurnLeft, Provenance::kStated};
+  if (e.turn_right || n.coded_turn_right) return {Movement::kTurnRight, Provenance::kStated};
+  if (e.lane_change || n.coded_lane_change) return {Movement::kChangingLanes, Provenance::kStated};
+  if (e.merge) return {Movement::kMerging, Provenance::kStated};
+  if (e.pass) return {Movement::kPassing, Provenance::kStated};
+  if (n.other_says_stopped && !e.stop_cancelled) return {Movement::kStopped, Provenance::kInferred};
+  if (e.slowing) return {Movement::kSlowing, Provenance::kStated};
+  if (e.straight || n.coded_straight || e.stop_cancelled) return {Movement::kStraight, Provenance::kStated};
+  return {Movement::kStraight, Provenance::kInferred};
+}
+
+bool Turning(Movement m) { return m == Movement::kTurnLeft || m == Movement::kTurnRight; }
 
 }  // namespace
 
@@ -197,310 +409,854 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     r.warnings.push_back("text: longer than " + std::to_string(kMaxBytes) + " bytes; only the start was read");
     text = text.substr(0, kMaxBytes);
   }
-  const std::string norm = Normalise(text);
-  const std::vector<std::string> sentences = Sentences(norm);
+  const string norm = Normalise(text);
+  std::vector<Sentence> sentences;
+  for (string& t : SplitSentences(norm)) sentences.push_back({std::move(t), Kind::kNarrative, {}, 0});
   if (sentences.empty()) {
     r.warnings.push_back("text: no readable sentences; every field is a default");
     return r;
   }
 
-  // Participants: the highest vehicle number mentioned.
-  static const std::regex ref(R"(\bv([1-9])\b)");
-  int max_v = 0;
-  for (auto it = std::sregex_iterator(norm.begin(), norm.end(), ref); it != std::sregex_iterator(); ++it) {
-    max_v = std::max(max_v, std::stoi((*it)[1].str()));
+  // ---- Descriptions ("v1, a 2000 pontiac montana minivan,") and aliases ("the pontiac").
+  static const regex kDesc(
+      R"(^v([1-9])\s*(?:,\s*|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
+  static const regex kBody(R"(^\s*,\s*([a-z0-9][a-z0-9 -]{1,40}?)\s+(?:was|that|which|were)\b)");
+  std::map<int, string> descriptions, bodies;
+  for (const Sentence& s : sentences) {
+    for (const Ref& ref : RefsIn(s.text)) {
+      if (descriptions.count(ref.vehicle)) continue;
+      const string tail = s.text.substr(ref.pos, 200);
+      smatch m;
+      if (std::regex_search(tail, m, kDesc) && !Has(m[2].str(), regex(R"(\b(?:male|female|man|woman|driver|year)\b)"))) {
+        descriptions[ref.vehicle] = m[2].str();
+        smatch b;
+        const string after = m.suffix().str();
+        if (std::regex_search(after, b, kBody)) bodies[ref.vehicle] = b[1].str();
+      }
+    }
   }
+  {
+    // Unique aliases: "the ford", "the taurus", "the ford taurus", "the motorcycle".
+    static const std::set<string> kGeneric = {"a", "an", "the", "red", "white", "black", "blue", "green", "silver",
+                                              "gray", "grey", "gold", "maroon", "tan", "4-door", "2-door", "door",
+                                              "unknown", "type", "model", "make", "with", "and", "sedan"};
+    std::map<string, std::set<int>> owners;
+    for (const auto& [v, d] : descriptions) {
+      std::vector<string> words;
+      size_t i = 0;
+      while (i < d.size()) {
+        size_t j = d.find(' ', i);
+        if (j == string::npos) j = d.size();
+        const string w = d.substr(i, j - i);
+        const bool year = w.size() == 4 && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+        if (!w.empty() && !year && !kGeneric.count(w)) words.push_back(w);
+        i = j + 1;
+      }
+      if (words.empty()) continue;
+      string all;
+      for (const auto& w : words) all += (all.empty() ? "" : " ") + w;
+      owners[all].insert(v);
+      owners[words.front()].insert(v);
+      if (words.size() > 1) {
+        string model;
+        for (size_t k = 1; k < words.size(); ++k) model += (model.empty() ? "" : " ") + words[k];
+        owners[model].insert(v);
+        owners[words.back()].insert(v);
+      }
+      static const std::array<const char*, 7> kClassWord = {"car", "suv", "pickup", "van", "truck", "bus", "motorcycle"};
+      owners[kClassWord[static_cast<size_t>(ClassOf(d + " " + (bodies.count(v) ? bodies[v] : "")))]].insert(v);
+    }
+    std::vector<std::pair<string, int>> aliases;
+    for (const auto& [alias, vs] : owners) {
+      if (vs.size() == 1 && alias.size() >= 3) aliases.emplace_back(alias, *vs.begin());
+    }
+    std::sort(aliases.begin(), aliases.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
+    if (!aliases.empty()) {
+      string alt;
+      for (const auto& [alias, v] : aliases) alt += (alt.empty() ? "" : "|") + EscapeRegex(alias);
+      const regex alias_re(R"(\bthe\s+(?:(?:19|20)\d\d\s+)?()" + alt + R"()\b(?!\s+(?:driver|was driven)))");
+      std::map<string, int> lookup(aliases.begin(), aliases.end());
+      for (Sentence& s : sentences) {
+        s.text = ReplaceWith(s.text, alias_re, [&](const smatch& m) { return "v" + std::to_string(lookup[m[1].str()]); });
+      }
+    }
+  }
+
+  // ---- Kinds, references, focus.
+  int max_v = 0;
+  for (Sentence& s : sentences) {
+    s.kind = KindOf(s.text);
+    s.refs = RefsIn(s.text);
+    for (const Ref& ref : s.refs) max_v = std::max(max_v, ref.vehicle);
+  }
+
+  // ---- The impact: the first sentence with a contact verb between two vehicles.
+  static const regex kContact(
+      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed)\b)");
+  size_t impact = sentences.size();
+  for (int pass = 0; pass < 3 && impact == sentences.size(); ++pass) {
+    for (size_t i = 0; i < sentences.size(); ++i) {
+      const Sentence& s = sentences[i];
+      if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
+      if (pass < 2 && s.kind == Kind::kStatement) continue;
+      if (!Has(s.text, kContact)) continue;
+      std::set<int> distinct;
+      for (const Ref& ref : s.refs) distinct.insert(ref.vehicle);
+      if ((pass == 0 && distinct.size() >= 2) || (pass >= 1 && !distinct.empty())) {
+        impact = i;
+        break;
+      }
+    }
+  }
+
+  // A struck vehicle that is never numbered ("struck a parked van").
+  static const regex kVehicleNoun(
+      R"(\b(?:car|van|vehicle|truck|pickup|pick-up|suv|motorcycle|bus|sedan|minivan|jeep|trailer|tractor-trailer)\b)");
+  static const regex kObjectNoun(
+      R"(\b(?:tree|pole|curb|fence|barrier|wall|guardrail|guard rail|ditch|sign|embankment|pedestrian|median|building|mailbox|post|rock|bridge|culvert|deer|animal|cyclist|bicycle)\b)");
+  bool unnumbered_other = false, unnumbered_parked = false;
+  if (impact < sentences.size()) {
+    const string& s = sentences[impact].text;
+    smatch vm;
+    if (std::regex_search(s, vm, kContact)) {
+      const string after = vm.suffix().str().substr(0, 80);
+      std::set<int> distinct;
+      for (const Ref& ref : sentences[impact].refs) distinct.insert(ref.vehicle);
+      static const regex kVehicleLike(R"(\bparked\b|\bunoccupied\b|\b(?:19|20)\d\d\s+[a-z])");
+      if (distinct.size() == 1 && (Has(after, kVehicleNoun) || Has(after, kVehicleLike)) &&
+          !Has(after.substr(0, 30), kObjectNoun) &&
+          max_v <= 1) {
+        unnumbered_other = true;
+        unnumbered_parked = Has(after, regex(R"(\bparked\b|\bunoccupied\b)"));
+      }
+    }
+  }
+
+  // ---- Participants.
   if (max_v > 0) {
-    r.participant_count.Set(max_v, Provenance::kStated);
+    r.participant_count.Set(std::max(max_v, unnumbered_other ? 2 : 0), Provenance::kStated);
   } else {
-    std::smatch m;
-    static const std::regex count(R"(\b([1-9])[- ]vehicle\b|\b([1-9]) vehicles\b)");
-    if (std::regex_search(norm, m, count)) {
+    static const regex kCount(R"(\b([1-9])[- ]vehicle\b|\b([1-9]) vehicles\b)");
+    smatch m;
+    if (std::regex_search(norm, m, kCount)) {
       r.participant_count.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
+    } else if (Has(norm, kContact) && Has(norm, kVehicleNoun)) {
+      // "the vehicle left the road and struck a tree": one unnumbered vehicle.
+      r.participant_count.Set(1, Provenance::kInferred);
     } else {
       r.warnings.push_back("participants: no vehicle references (V1, vehicle one, ...) found");
     }
   }
-  for (int i = 1; i <= std::max(1, r.participant_count.value); ++i) {
+  const int n_vehicles = std::clamp(r.participant_count.value, 1, kMaxVehicles);
+  for (int i = 1; i <= n_vehicles; ++i) {
     VehicleRecord v;
     v.id = "V" + std::to_string(i);
-    r.vehicles.push_back(v);
+    if (descriptions.count(i)) {
+      v.description.Set(descriptions[i], Provenance::kStated);
+      v.vehicle_class.Set(ClassOf(descriptions[i] + " " + (bodies.count(i) ? bodies[i] : "")), Provenance::kInferred);
+    }
+    r.vehicles.push_back(std::move(v));
+  }
+  if (unnumbered_other && r.vehicles.size() >= 2 && unnumbered_parked) {
+    r.vehicles[1].parked.Set(true, Provenance::kStated);
   }
 
-  // Road: kind, lanes, division, surface, light, grade, speed limit.
-  static const std::regex t_junction(R"(\bt[- ]?(?:intersection|junction)|\bthree[- ]leg|\b3[- ]leg|\btee\b|t-type)");
-  static const std::regex intersection(R"(\bintersection\b)");
-  if (std::regex_search(norm, t_junction)) r.road.kind.Set(RoadKind::kTJunction, Provenance::kStated);
-  else if (std::regex_search(norm, intersection)) r.road.kind.Set(RoadKind::kIntersection, Provenance::kStated);
-  else if (std::regex_search(norm, std::regex(R"(\bramp\b)"))) r.road.kind.Set(RoadKind::kRamp, Provenance::kStated);
-  else if (std::regex_search(norm, std::regex(R"(\bdriveway\b)"))) r.road.kind.Set(RoadKind::kDriveway, Provenance::kStated);
-  else if (std::regex_search(norm, std::regex(R"(\bcurve)"))) r.road.kind.Set(RoadKind::kCurve, Provenance::kStated);
-
-  {
-    static const std::regex per_dir(R"(\b([1-9])[- ](?:through\s+|travel\s+)?lanes?\s+(?:in\s+|for\s+)?(?:each|either|both|per)\s+direction)");
-    static const std::regex dir_lanes(R"(\b([1-9])\s+(?:north|south|east|west)bound\s+(?:travel\s+)?lanes?\b)");
-    static const std::regex total(R"(\b([1-9])[- ]lanes?\b)");
-    std::smatch m;
-    for (const auto& s : sentences) {
-      if (!r.road.lanes_per_direction.known() && std::regex_search(s, m, per_dir)) {
-        r.road.lanes_per_direction.Set(std::stoi(m[1].str()), Provenance::kStated);
-        continue;  // "2 lanes in each direction" is not a total of 2
-      }
-      if (!r.road.lanes_total.known() && std::regex_search(s, m, total)) {
-        r.road.lanes_total.Set(std::stoi(m[1].str()), Provenance::kStated);
-      }
-      if (!r.road.lanes_per_direction.known() && std::regex_search(s, m, dir_lanes)) {
-        r.road.lanes_per_direction.Set(std::stoi(m[1].str()), Provenance::kStated);
-      }
-    }
-    if (std::regex_search(norm, std::regex(R"(\boneway\b)"))) r.road.one_way.Set(true, Provenance::kStated);
-    if (std::regex_search(norm, std::regex(R"((?:^|[^n])\b(?:divided|median|barrier)\b)")) &&
-        !std::regex_search(norm, std::regex(R"(\bundivided\b|not (?:physically )?divided|non-divided)"))) {
-      r.road.divided.Set(true, Provenance::kStated);
-    }
-    if (r.road.lanes_total.known() && !r.road.lanes_per_direction.known()) {
-      const int per = r.road.one_way.value ? r.road.lanes_total.value : std::max(1, r.road.lanes_total.value / 2);
-      r.road.lanes_per_direction.Set(per, Provenance::kInferred);
-    } else if (!r.road.lanes_total.known() && r.road.lanes_per_direction.known()) {
-      r.road.lanes_total.Set(r.road.lanes_per_direction.value * (r.road.one_way.value ? 1 : 2), Provenance::kInferred);
-    }
-  }
-  if (std::regex_search(norm, std::regex(R"(\b(?:icy|ice|frost|black ice)\b)"))) r.road.surface.Set(Surface::kIce, Provenance::kStated);
-  else if (std::regex_search(norm, std::regex(R"(\bsnow|slush)"))) r.road.surface.Set(Surface::kSnow, Provenance::kStated);
-  else if (std::regex_search(norm, std::regex(R"(\bwet\b|\braining\b|\brain\b)"))) r.road.surface.Set(Surface::kWet, Provenance::kStated);
-  else if (std::regex_search(norm, std::regex(R"(\bdry\b)"))) r.road.surface.Set(Surface::kDry, Provenance::kStated);
-  {
-    std::smatch m;
-    if (std::regex_search(norm, m, std::regex(R"(\b(daylight|dark(?: but lighted| and lighted|, lighted)?|dusk|dawn|night)\b)"))) {
-      r.road.lighting.Set(m[1].str(), Provenance::kStated);
-    }
-    if (std::regex_search(norm, m, std::regex(R"(\b(uphill|downhill|level)\b)"))) r.road.grade.Set(m[1].str(), Provenance::kStated);
-  }
-
-  // Vehicles: description, class, direction, lane, movement, speed.
-  const std::vector<Segment> segments = Segments(sentences);
-  size_t impact_sentence = sentences.size();
+  // ---- Per-vehicle segments. A segment starts where a vehicle is the
+  // subject of a clause ("v1 was traveling", ", and v2 stopped", "the driver
+  // of v2 ...") or opens a relative clause ("behind v2, a jetta, which was
+  // stopped"), and runs to the next such start of another vehicle or to a
+  // mention of an unnumbered vehicle ("a noncontact vehicle slowing to turn"
+  // is not this vehicle's movement). Objects ("struck v2", "behind v2") do
+  // not start a segment: the clause is still about its subject.
+  struct Segment {
+    int vehicle;
+    size_t sentence;
+    string text;
+  };
+  static const regex kSubjectBefore(
+      R"((?:^|[,:(]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
+  static const regex kRelativeAfter(R"(^(?:,?\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|is|had|has)\b)");
+  static const regex kOtherVehicle(
+      R"(\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b)");
+  std::vector<Segment> segments;
+  int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
-    if (!AboutPeople(sentences[i]) && IsContactSentence(sentences[i])) {
-      impact_sentence = i;
-      break;
+    const Sentence& s = sentences[i];
+    struct Start {
+      size_t pos;
+      int vehicle;
+    };
+    std::vector<Start> starts;
+    for (const Ref& ref : s.refs) {
+      const string before = s.text.substr(ref.pos > 40 ? ref.pos - 40 : 0, ref.pos > 40 ? 40 : ref.pos);
+      const string after = s.text.substr(ref.pos + 2, 80);
+      if (Has(before, kSubjectBefore) || Has(after, kRelativeAfter)) starts.push_back({ref.pos, ref.vehicle});
+    }
+    // Text before the first start belongs to the sentence's focus (pronoun sentences, "as he stopped, ...").
+    const size_t first = starts.empty() ? s.text.size() : starts.front().pos;
+    auto cut = [&](size_t from, size_t to) {
+      string t = s.text.substr(from, to - from);
+      smatch m;
+      if (std::regex_search(t.cbegin() + std::min<size_t>(t.size(), 3), t.cend(), m, kOtherVehicle)) {
+        t = t.substr(0, static_cast<size_t>(m.position()) + std::min<size_t>(t.size(), 3));
+      }
+      return t;
+    };
+    if (first > 0) {
+      // Coded sentences name their vehicle first ("the critical precrash
+      // event for v1 was ... this vehicle ..."); others continue the focus.
+      const int owner = s.kind == Kind::kCoding && !s.refs.empty() ? s.refs.front().vehicle : focus;
+      if (owner > 0) segments.push_back({owner, i, cut(0, first)});
+    }
+    if (!starts.empty()) {
+      focus = starts.front().vehicle;
+    } else if (s.kind == Kind::kCoding && !s.refs.empty()) {
+      focus = s.refs.front().vehicle;
+    }
+    for (size_t k = 0; k < starts.size(); ++k) {
+      if (k > 0 && starts[k - 1].vehicle == starts[k].vehicle) continue;
+      size_t end = s.text.size();
+      for (size_t q = k + 1; q < starts.size(); ++q) {
+        if (starts[q].vehicle != starts[k].vehicle) {
+          end = starts[q].pos;
+          break;
+        }
+      }
+      segments.push_back({starts[k].vehicle, i, cut(starts[k].pos, end)});
     }
   }
-  static const std::regex desc(R"(^v[1-9]\s*(?:,|was|is|\()\s*(?:was\s+|is\s+)?(?:a|an)\s+([^,()]*?)(?:,|\)|\s+(?:was|that|which|driven|operated|travel|going|heading|approach|and)\b|$))");
-  static const std::regex lane_no(R"(\b(?:in|within|using)\s+(?:the\s+)?(?:lane\s+([1-9])|([1-9])(?:st|nd|rd|th)\s+(?:\w+\s+)?lane))");
-  static const std::regex speed(R"(\b(\d{1,3})(?:\s*-\s*(\d{1,3}))?\s*(km/?h|kmph|kph|mph|miles per hour|kilometers per hour))");
-  std::vector<int> best_rank(r.vehicles.size() + 1, -1);
+
+#ifdef ACCSIM_EXTRACT_DEBUG
+  for (const auto& seg : segments) {
+    std::fprintf(stderr, "[v%d s%zu k%d] %s\n", seg.vehicle, seg.sentence, static_cast<int>(sentences[seg.sentence].kind),
+                 seg.text.c_str());
+  }
+#endif
+  // ---- Directions, lanes, speeds, movements per vehicle.
+  static const regex kLaneNo(
+      R"(\b(?:in|within|using|from|occupying)\s+(?:the\s+)?(?:lane\s+([1-9])\b|([1-9])(?:st|nd|rd|th)\s+(?:\w+\s+){0,2}?lane))");
+  static const regex kSpeed(
+      R"(\b(?:travel\w*|going|speed\w*|estimated|at|approximately|about|between|around|driving|doing|less than|no more than)\s+(?:\w+\s+){0,4}?(\d{1,3})(?:\s*(?:-|to)\s*(\d{1,3}))?\s*(kmh|mph)\b)");
+  static const regex kLimitWords(R"(limit|posted|advisory|suggested|recommended|speed zone)");
+  static const regex kSameDir(R"(\b(?:same direction|also (?:travel\w*|heading|going) (?:north|south|east|west)|behind v[1-9]|followed|following)\b)");
+  static const regex kOppositeDir(R"(\b(?:opposite direction|proceeding opposite|oncoming|opposing direction)\b)");
+  std::vector<MovementEvidence> narrative(r.vehicles.size() + 1), statement(r.vehicles.size() + 1);
+  std::vector<int> relation(r.vehicles.size() + 1, 0);  // +1 same direction as the other, -1 opposite
   for (const Segment& seg : segments) {
     if (seg.vehicle < 1 || seg.vehicle > static_cast<int>(r.vehicles.size())) continue;
-    VehicleRecord& v = r.vehicles[static_cast<size_t>(seg.vehicle - 1)];
-    std::smatch m;
-    if (!v.description.known() && std::regex_search(seg.text, m, desc)) {
-      v.description.Set(m[1].str(), Provenance::kStated);
-      v.vehicle_class.Set(ClassOf(m[1].str()), Provenance::kInferred);
+    const size_t vi = static_cast<size_t>(seg.vehicle);
+    VehicleRecord& v = r.vehicles[vi - 1];
+    const Kind kind = sentences[seg.sentence].kind;
+    const bool pre_impact = seg.sentence <= impact || impact == sentences.size();
+    smatch m;
+    if (kind == Kind::kNarrative || kind == Kind::kStatement) {
+      if (!v.travel.known() && (kind == Kind::kNarrative || pre_impact)) {
+        if (const auto d = DirectionIn(seg.text)) v.travel.Set(*d, Provenance::kStated);
+      }
+      if (relation[vi] == 0 && pre_impact) {
+        if (Has(seg.text, kOppositeDir)) relation[vi] = -1;
+        else if (Has(seg.text, kSameDir)) relation[vi] = 1;
+      }
+      if (!v.lane.known() && std::regex_search(seg.text, m, kLaneNo)) {
+        v.lane.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
+      }
     }
-    const bool people = AboutPeople(sentences[seg.sentence]);
-    if (!people && !v.travel.known()) {
-      if (const auto d = DirectionIn(seg.text)) v.travel.Set(*d, Provenance::kStated);
-    }
-    if (!people && !v.lane.known() && std::regex_search(seg.text, m, lane_no)) {
-      v.lane.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
-    }
-    if (!v.speed_mps.known() && std::regex_search(seg.text, m, speed) &&
-        seg.text.find("limit") == std::string::npos) {
+    if (kind != Kind::kCoding && !v.speed_mps.known() && !Has(seg.text, kLimitWords) &&
+        std::regex_search(seg.text, m, kSpeed)) {
       const double lo = std::stod(m[1].str());
       const double hi = m[2].matched ? std::stod(m[2].str()) : lo;
-      const bool kmh = m[3].str()[0] == 'k';
-      v.speed_mps.Set(0.5 * (lo + hi) * (kmh ? kKmhToMps : kMphToMps), Provenance::kStated);
+      const bool kmh = m[3].str() == "kmh";
+      if (hi < 200) {
+        v.speed_mps.Set(0.5 * (lo + hi) * (kmh ? kKmhToMps : kMphToMps), Provenance::kStated);
+        v.speed_unit.Set(kmh ? "km/h" : "mph", Provenance::kStated);
+      }
     }
-    if (!people && seg.sentence <= impact_sentence) {
-      const Movement mv = MovementIn(seg.text);
-      const int rank = Rank(mv);
-      if (rank > best_rank[static_cast<size_t>(seg.vehicle)] && mv != Movement::kUnknown) {
-        best_rank[static_cast<size_t>(seg.vehicle)] = rank;
-        v.movement.Set(mv, Provenance::kStated);
+    if (kind == Kind::kNarrative && pre_impact) {
+      ReadMovement(seg.text, narrative[vi]);
+    } else if (kind == Kind::kStatement || (kind == Kind::kPeople && Has(seg.text, regex(R"(\bparked\b)")))) {
+      ReadMovement(seg.text, statement[vi]);
+    } else if (kind == Kind::kCoding) {
+      MovementEvidence* other = nullptr;
+      if (r.vehicles.size() == 2) other = &narrative[vi == 1 ? 2 : 1];
+      ReadCoding(seg.text, narrative[vi], other);
+    }
+  }
+  // Directions stated relative to the other vehicle.
+  if (r.vehicles.size() >= 2) {
+    for (size_t i = 1; i <= 2; ++i) {
+      VehicleRecord& v = r.vehicles[i - 1];
+      const VehicleRecord& o = r.vehicles[2 - i];
+      if (!v.travel.known() && o.travel.known() && o.travel.value && relation[i] != 0) {
+        const Compass c = *o.travel.value;
+        v.travel.Set(relation[i] > 0 ? c : static_cast<Compass>((static_cast<int>(c) + 2) % 4), Provenance::kInferred);
       }
     }
   }
-  for (auto& v : r.vehicles) {
-    if (!v.movement.known()) v.movement.Set(Movement::kStraight, Provenance::kInferred);
+  for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    VehicleRecord& v = r.vehicles[i];
+    if (narrative[i + 1].parked || statement[i + 1].parked) v.parked.Set(true, Provenance::kStated);
+    const auto [mv, src] = DecideMovement(narrative[i + 1], statement[i + 1]);
+    v.movement.Set(mv, src);
+    if (v.parked.value) v.movement.Set(Movement::kStopped, Provenance::kStated);
   }
-  // Speed limit: the posted limit, preferring the one stated for V1's direction.
+
+  // ---- Road: kind, lanes, division, surface, weather, light, grade, limit.
+  string scene;  // narrative and statements only: coded sentences use fixed NHTSA wording
+  for (const Sentence& s : sentences) {
+    if (s.kind == Kind::kNarrative || s.kind == Kind::kStatement) scene += s.text;
+  }
+  static const regex kTJunction(
+      R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
+  static const regex kIntersection(
+      R"(\bintersection\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway))");
+  static const regex kDriveway(
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b)");
+  static const regex kRamp(R"(\b(?:on|off|entrance|exit)?[- ]?ramp\b)");
+  static const regex kCurve(R"(\bcurv(?:e|ed|ing)\b)");
+  if (Has(scene, kTJunction)) r.road.kind.Set(RoadKind::kTJunction, Provenance::kStated);
+  else if (Has(scene, kIntersection)) r.road.kind.Set(RoadKind::kIntersection, Provenance::kStated);
+  else if (Has(scene, kRamp)) r.road.kind.Set(RoadKind::kRamp, Provenance::kStated);
+  else if (Has(scene, kDriveway)) r.road.kind.Set(RoadKind::kDriveway, Provenance::kStated);
+  else if (Has(scene, kCurve)) r.road.kind.Set(RoadKind::kCurve, Provenance::kStated);
+
+  const VehicleRecord* v1 = r.vehicles.empty() ? nullptr : &r.vehicles.front();
+  // -1: V1's axis is unknown (an int, not an optional: GCC 12 warns falsely on the latter).
+  const int v1_axis = v1 && v1->travel.known() && v1->travel.value ? AxisOf(*v1->travel.value) : -1;
+  // Which vehicle's segment a position in a sentence belongs to.
+  auto owner_at = [&](const Sentence& s, size_t pos) {
+    int owner = 0;
+    for (const Ref& ref : s.refs) {
+      if (ref.pos <= pos) owner = ref.vehicle;
+    }
+    return owner;
+  };
+  {
+    static const regex kPerDir(
+        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?directions?)");
+    static const regex kDirectional(
+        R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
+    static const regex kTotal(R"(\b(\d)[- ]lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per)))");
+    static const regex kOneWayHere(R"(\boneway\b)");
+    std::vector<RoadStatement> roads;
+    for (size_t i = 0; i < sentences.size(); ++i) {
+      const Sentence& s = sentences[i];
+      if (s.kind != Kind::kNarrative && s.kind != Kind::kStatement) continue;
+      auto add = [&](const smatch& m, size_t pos, int total, int per_dir, int directional) {
+        RoadStatement rs;
+        rs.sentence = i;
+        rs.owner = owner_at(s, pos);
+        const size_t from = pos > 60 ? pos - 60 : 0;
+        const string around = s.text.substr(from, pos - from + static_cast<size_t>(m.length(0)) + 40);
+        rs.axis = AxisIn(around);
+        // One-way belongs to this road only when no other road phrase
+        // (", and a ...") sits between the count and the word.
+        const string near_before = s.text.substr(pos > 25 ? pos - 25 : 0, pos > 25 ? 25 : pos);
+        string near_after = s.text.substr(pos + static_cast<size_t>(m.length(0)), 15);
+        const size_t stop = std::min(near_after.find(','), near_after.find(" and "));
+        if (stop != string::npos) near_after = near_after.substr(0, stop);
+        rs.one_way = Has(near_before, kOneWayHere) || Has(near_after, kOneWayHere);
+        rs.total = total;
+        rs.per_direction = per_dir;
+        rs.directional = directional;
+        roads.push_back(rs);
+      };
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kPerDir); it != std::sregex_iterator(); ++it) {
+        add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()), 0);
+      }
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
+           ++it) {
+        add(*it, static_cast<size_t>(it->position()), 0, 0, std::stoi((*it)[1].matched ? (*it)[1].str() : (*it)[2].str()));
+      }
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTotal); it != std::sregex_iterator(); ++it) {
+        // "lane 2" / "the 2 lanes to the left" are not road descriptions; "2-lane", "2 lane road" are.
+        const string after = it->suffix().str().substr(0, 40);
+        const string before = s.text.substr(0, static_cast<size_t>(it->position()));
+        if (Has(after, regex(R"(^\s*(?:to the|of the|lines?))"))) continue;
+        if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), regex(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)"))) continue;
+        add(*it, static_cast<size_t>(it->position()), std::stoi((*it)[1].str()), 0, 0);
+      }
+    }
+    std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) { return a.sentence < b.sentence; });
+    // V1's road: stated in V1's own segment, else the road on V1's axis, else
+    // the first road not tied to another vehicle (the crash road is
+    // described first).
+    auto pick = [&](auto pred) -> const RoadStatement* {
+      for (const auto& rs : roads) {
+        if (pred(rs)) return &rs;
+      }
+      return nullptr;
+    };
+    const RoadStatement* best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
+    if (!best && v1_axis >= 0) {
+      best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == v1_axis; });
+    }
+    if (!best) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
+    if (!best && !roads.empty()) best = &roads.front();
+    if (best) {
+      // Combine statements about the same road (a total in one sentence, the
+      // split per direction in the next).
+      int total = best->total, per = best->per_direction, directional = best->directional;
+      bool one_way = best->one_way;
+      for (const auto& rs : roads) {
+        if (&rs == best || rs.owner > 1 || (rs.axis && best->axis && rs.axis != best->axis)) continue;
+        if (rs.sentence > best->sentence + 1) continue;
+        if (!total && rs.total) total = rs.total;
+        if (!per && rs.per_direction) per = rs.per_direction;
+        if (!directional && rs.directional) directional = rs.directional;
+      }
+      static const regex kOneWaySentence(R"(\boneway\b)");
+      if (!one_way && Has(sentences[best->sentence].text, kOneWaySentence) &&
+          !Has(sentences[best->sentence].text, regex(R"(\b2[- ]way\b|\band (?:a|an)\b)"))) {
+        one_way = true;
+      }
+      if (one_way) {
+        const int n = total ? total : (directional ? directional : (per ? per : 1));
+        r.road.one_way.Set(true, Provenance::kStated);
+        r.road.lanes_total.Set(n, Provenance::kStated);
+        r.road.lanes_per_direction.Set(n, Provenance::kInferred);
+      } else if (per) {
+        r.road.lanes_per_direction.Set(per, Provenance::kStated);
+        r.road.lanes_total.Set(total ? total : 2 * per, total ? Provenance::kStated : Provenance::kInferred);
+      } else if (total) {
+        r.road.lanes_total.Set(total, Provenance::kStated);
+        r.road.lanes_per_direction.Set(directional ? directional : std::max(1, total / 2),
+                                       directional ? Provenance::kStated : Provenance::kInferred);
+      } else if (directional) {
+        r.road.lanes_per_direction.Set(directional, Provenance::kStated);
+        r.road.lanes_total.Set(2 * directional, Provenance::kInferred);
+      }
+    }
+    if (!best && Has(scene, kOneWayHere) && !Has(scene, regex(R"(\b2[- ]way\b)"))) {
+      r.road.one_way.Set(true, Provenance::kStated);
+    }
+    static const regex kDivided(R"(\bdivided\b|\bmedian\b|\bdivided highway\b|\bbarrier wall\b|\binterstate\b|\bfreeway\b)");
+    static const regex kUndivided(R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b)");
+    if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);
+    else if (Has(scene, kDivided)) r.road.divided.Set(true, Provenance::kStated);
+    if (r.road.divided.value && r.road.lanes_total.source == Provenance::kStated &&
+        r.road.lanes_per_direction.source != Provenance::kStated && !r.road.one_way.value) {
+      // "the 2 northbound lanes of a divided highway": a count next to a
+      // direction word on a divided road is that direction's count.
+      r.road.lanes_per_direction.Set(r.road.lanes_total.value, Provenance::kInferred);
+    }
+  }
+  static const regex kIce(R"(\b(?:icy|ice|frost|black ice|frozen)\b)");
+  static const regex kSnow(R"(\bsnow(?:y|ing|ed| covered)?\b|\bslush)");
+  static const regex kWet(R"(\bwet\b|\braining\b|\brain\b|\bdamp\b)");
+  static const regex kDry(R"(\bdry\b)");
+  if (Has(scene, kIce)) r.road.surface.Set(Surface::kIce, Provenance::kStated);
+  else if (Has(scene, regex(R"(\b(?:snow|slush)[a-z ]{0,20}(?:covered|road|surface|packed)|\broad\w* (?:was |were )?snow)"))) r.road.surface.Set(Surface::kSnow, Provenance::kStated);
+  else if (Has(scene, kWet)) r.road.surface.Set(Surface::kWet, Provenance::kStated);
+  else if (Has(scene, kDry)) r.road.surface.Set(Surface::kDry, Provenance::kStated);
+  if (Has(scene, regex(R"(\brain(?:ing|y)?\b|\bdrizzl)"))) r.road.weather.Set("rain", Provenance::kStated);
+  else if (Has(scene, kSnow)) r.road.weather.Set("snow", Provenance::kStated);
+  else if (Has(scene, regex(R"(\bfog(?:gy)?\b|\bmist)"))) r.road.weather.Set("fog", Provenance::kStated);
+  else if (Has(scene, regex(R"(\bcloudy\b|\bovercast\b)"))) r.road.weather.Set("cloudy", Provenance::kStated);
+  else if (Has(scene, regex(R"(\bclear\b|\bsunny\b)"))) r.road.weather.Set("clear", Provenance::kStated);
+  if (Has(scene, regex(R"(\bdark(?:,| but| and)? (?:lighted|lit|illuminated)|\bstreet ?lights?\b|\broadway was illuminated)"))) {
+    r.road.lighting.Set("dark_lighted", Provenance::kStated);
+  } else if (Has(scene, regex(R"(\bdark\b|\bnight\b|\bunlighted\b|\bdarkness\b)"))) {
+    r.road.lighting.Set("dark", Provenance::kStated);
+  } else if (Has(scene, regex(R"(\bdusk\b)"))) {
+    r.road.lighting.Set("dusk", Provenance::kStated);
+  } else if (Has(scene, regex(R"(\bdawn\b)"))) {
+    r.road.lighting.Set("dawn", Provenance::kStated);
+  } else if (Has(scene, regex(R"(\bdaylight\b|\bdaytime\b)"))) {
+    r.road.lighting.Set("daylight", Provenance::kStated);
+  }
+  if (Has(scene, regex(R"(\buphill\b|\bupgrade\b|\bup a hill\b)"))) r.road.grade.Set("uphill", Provenance::kStated);
+  else if (Has(scene, regex(R"(\bdownhill\b|\bdowngrade\b|\bdown (?:a |the )?hill\b|\bgrade of -|\b-\s?\d+(?:\.\d+)?\s?% grade)"))) r.road.grade.Set("downhill", Provenance::kStated);
+  else if (Has(scene, regex(R"(\blevel\b|\bno grade\b|\bflat\b)"))) r.road.grade.Set("level", Provenance::kStated);
+
+  // Speed limit: the posted limit of V1's road.
   {
     struct Limit {
       double mps;
-      std::string unit;
-      std::optional<Compass> dir;
+      string unit;
+      int owner;
+      std::optional<int> axis;
+      size_t order;
     };
     std::vector<Limit> limits;
-    static const std::regex limit_value(R"((\d{1,3})\s*(km/?h|kmph|kph|mph|miles per hour|kilometers per hour))");
-    for (const auto& s : sentences) {
-      const size_t at = s.find("limit");
-      if (at == std::string::npos && s.find("posted") == std::string::npos) continue;
-      std::smatch m;
-      std::string rest = s;
-      while (std::regex_search(rest, m, limit_value)) {
-        const bool kmh = m[2].str()[0] == 'k';
-        const std::string before = rest.substr(0, static_cast<size_t>(m.position()));
-        limits.push_back({std::stod(m[1].str()) * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph",
-                          DirectionIn(before)});
-        // A value and its conversion in brackets state one limit.
-        const std::string tail = m.suffix().str();
-        std::smatch conv;
-        if (std::regex_search(tail, conv, std::regex(R"(^\s*\(\s*\d{1,3}\s*(?:km/?h|kmph|kph|mph)\s*\))"))) {
-          rest = conv.suffix().str();
-        } else {
-          rest = tail;
+    static const regex kValue(R"(\b(\d{2,3})\s*(kmh|mph)\b)");
+    static const regex kBare(R"(\b(?:speed limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet)))");
+    static const regex kAdvisory(R"((?:advisory|suggested|recommended|warning|curve)[^.]{0,25}$)");
+    size_t order = 0;
+    for (const Sentence& s : sentences) {
+      if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
+      if (s.text.find("limit") == string::npos && s.text.find("posted") == string::npos &&
+          s.text.find("speed zone") == string::npos) {
+        continue;
+      }
+      bool found = false;
+      size_t skip_until = 0;
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kValue); it != std::sregex_iterator(); ++it) {
+        const size_t pos = static_cast<size_t>(it->position());
+        if (pos < skip_until) continue;
+        const string before = s.text.substr(0, pos);
+        // A value and its conversion in brackets are one limit.
+        const string tail = it->suffix().str();
+        smatch conv;
+        if (std::regex_search(tail, conv, regex(R"(^\s*\(\s*\d{2,3}\s*(?:kmh|mph)\s*\))"))) {
+          skip_until = pos + static_cast<size_t>(it->length(0)) + static_cast<size_t>(conv.length(0));
         }
+        if (Has(before.substr(before.size() > 40 ? before.size() - 40 : 0), kAdvisory)) continue;
+        if (before.find("limit") == string::npos && before.find("posted") == string::npos &&
+            before.find("speed zone") == string::npos && tail.find("limit") == string::npos &&
+            tail.find("posted") == string::npos) {
+          continue;
+        }
+        const bool kmh = (*it)[2].str() == "kmh";
+        const double value = std::stod((*it)[1].str());
+        if (value < 5 || value > 180) continue;
+        limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
+                          AxisIn(before), order++});
+        found = true;
+      }
+      smatch m;
+      if (!found && std::regex_search(s.text, m, kBare)) {
+        limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, static_cast<size_t>(m.position())),
+                          AxisIn(s.text.substr(0, static_cast<size_t>(m.position()))), order++});
       }
     }
-    if (!limits.empty()) {
-      const auto& v1_dir = r.vehicles.front().travel;
-      const Limit* pick = &limits.front();
+    const Limit* pick = nullptr;
+    for (const auto& l : limits) {
+      if (l.owner == 1) {
+        pick = &l;
+        break;
+      }
+    }
+    if (!pick && v1_axis >= 0) {
       for (const auto& l : limits) {
-        if (v1_dir.known() && l.dir && *l.dir == *v1_dir.value) {
+        if (l.owner <= 1 && l.axis && *l.axis == v1_axis) {
           pick = &l;
           break;
         }
       }
+    }
+    if (!pick) {
+      for (const auto& l : limits) {
+        if (l.owner <= 1) {
+          pick = &l;
+          break;
+        }
+      }
+    }
+    if (!pick && !limits.empty()) pick = &limits.front();
+    if (pick) {
       r.road.speed_limit_mps.Set(pick->mps, Provenance::kStated);
       r.road.speed_limit_unit.Set(pick->unit, Provenance::kStated);
     }
   }
 
-  // The impact: who struck whom, with which areas.
-  if (impact_sentence < sentences.size()) {
-    const std::string& s = sentences[impact_sentence];
-    static const std::string kArea = R"(((?:(?:left|right|front|rear|back)[- ]?\s*)+(?:side|end|corner|quarter|bumper|door|fender|plane|panel|area|portion)?(?:\s+(?:side|plane|area))?))";
-    static const std::regex verb(
-        R"(\b(contact(?:ed|ing)?|struck|strik(?:e|es|ing)|impact(?:ed|ing)?|collided|hit|crashed|rear[- ]ended|sideswiped)\b)");
-    std::smatch vm;
-    std::regex_search(s, vm, verb);
+  // ---- Striker, struck and damage areas.
+  std::map<int, AreaWords> area_words;
+  int striker = 0, struck = 0;
+  bool struck_object = false;
+  if (impact < sentences.size()) {
+    const string& s = sentences[impact].text;
+    smatch vm;
+    std::regex_search(s, vm, kContact);
     const size_t verb_pos = vm.empty() ? s.size() : static_cast<size_t>(vm.position());
-    const bool passive =
-        std::regex_search(s, std::regex(R"(\b(?:was|were|is|been|being|got)\s+(?:\w+\s+)?(?:contacted|struck|impacted|hit|rear[- ]ended|sideswiped)\b)"));
-    // Subject: the vehicle named last before the verb; object: the first after it.
-    std::vector<std::pair<size_t, int>> refs;
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), ref); it != std::sregex_iterator(); ++it) {
-      refs.emplace_back(static_cast<size_t>(it->position()), std::stoi((*it)[1].str()));
-    }
-    int subject = 0, object = 0;
-    for (const auto& [pos, n] : refs) {
-      if (pos < verb_pos) subject = n;
-    }
-    for (const auto& [pos, n] : refs) {
-      if (pos > verb_pos && n != subject) {
-        object = n;
+    static const regex kPassive(
+        R"(\b(?:was|were|is|been|being|got|get|gets)\s+(?:\w+\s+)?(?:contacted|struck|impacted|hit|rear[- ]ended|sideswiped|t-?boned|broadsided)\b)");
+    const bool passive = Has(s.substr(0, std::min(s.size(), verb_pos + 20)), kPassive);
+    const std::vector<Ref>& refs = sentences[impact].refs;
+    int object = 0, subject = 0;
+    for (const Ref& ref : refs) {
+      if (ref.pos > verb_pos) {
+        object = ref.vehicle;
         break;
       }
     }
-    int striker = passive ? object : subject, struck = passive ? subject : object;
-    // Areas named with a vehicle: "the front of V1", "V1's front",
-    // "V2 on the right side", "with its front" (the striker's), "was struck
+    for (const Ref& ref : refs) {
+      if (ref.pos < verb_pos && ref.vehicle != object) subject = ref.vehicle;
+    }
+    if (!subject && object) {
+      for (const Ref& ref : refs) {
+        if (ref.vehicle != object) {
+          subject = ref.vehicle;
+          break;
+        }
+      }
+    }
+    if (!subject && !object && !refs.empty()) subject = refs.front().vehicle;
+    if (passive && object && s.find(" by ", verb_pos) != string::npos) {
+      striker = object;
+      struck = subject;
+    } else if (passive) {
+      striker = object;
+      struck = subject;
+    } else {
+      striker = subject;
+      struck = object;
+    }
+    if (!striker && subject) striker = subject;
+    if (striker == struck) struck = 0;
+    if (striker && !struck && r.vehicles.size() >= 2) {
+      const string after = s.substr(verb_pos, 80);
+      if (unnumbered_other || (r.vehicles.size() == 2 && !Has(after, kObjectNoun))) {
+        struck = striker == 1 ? 2 : 1;
+      } else {
+        struck_object = true;
+      }
+    } else if (striker && !struck) {
+      struck_object = true;
+    }
+    // Areas named with a vehicle: "the left rear of v2", "v2's right front",
+    // "v1 on the right side", "with its front" (the striker's), "was struck
     // in the left side" (the struck vehicle's).
-    std::map<int, DamageArea> area;
-    auto note = [&](int v, const std::string& words) {
-      const DamageArea d = AreaOf(words);
-      if (v > 0 && d != DamageArea::kUnknown && !area.count(v)) area[v] = d;
+    static const string kArea =
+        R"(((?:(?:left|right|front|rear|back|driver'?s?|passenger)(?:[- ]|\s)*(?:hand\s+)?){1,3}(?:side|end|corner|quarter(?:\s+panel)?|bumper|door|fender|plane|panel|area|portion|wheel|tire|half)?s?))";
+    static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+)?v([1-9])\b)");
+    static const regex kVs(R"(\bv([1-9])'?s\s+)" + kArea);
+    static const regex kVOn(R"(\bv([1-9])\s+(?:\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
+    static const regex kWithIts(R"(\b(?:with|using)\s+(?:its|it's|the|his|her|their)\s+)" + kArea);
+    static const regex kStruckIn(
+        R"(\b(?:contacted|struck|impacted|hit|stuck)\s+(?:\w+\s+){0,3}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
+    static const regex kItsArea(R"(\b(?:its|it's)\s+)" + kArea + R"(\s+(?:was|were|struck|impacted|contacted|hit))");
+    auto note = [&](int v, const string& words) {
+      const AreaWords a = ParseArea(words);
+      if (v > 0 && a.any() && !area_words.count(v)) area_words[v] = a;
     };
-    const std::regex of_v(kArea + R"(\s+(?:of\s+(?:the\s+)?)v([1-9])\b)");
-    const std::regex v_s(R"(\bv([1-9])'?s\s+)" + kArea);
-    const std::regex v_on(R"(\bv([1-9])\s+(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
-    const std::regex with_its(R"(\b(?:with|using)\s+(?:its|it's|the|his|her)?\s*)" + kArea);
-    const std::regex struck_in(R"(\b(?:contacted|struck|impacted|hit)\s+(?:on|in|at)\s+(?:the|its|it's)\s+)" + kArea);
-    const std::regex its_area(R"(\bits\s+)" + kArea + R"(\s+(?:was|were))");
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), of_v); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kOfV); it != std::sregex_iterator(); ++it) {
       note(std::stoi((*it)[2].str()), (*it)[1].str());
     }
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), v_s); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kVs); it != std::sregex_iterator(); ++it) {
       note(std::stoi((*it)[1].str()), (*it)[2].str());
     }
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), v_on); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kVOn); it != std::sregex_iterator(); ++it) {
       note(std::stoi((*it)[1].str()), (*it)[2].str());
     }
-    std::smatch am;
-    if (std::regex_search(s, am, with_its)) note(striker, am[1].str());
-    if (std::regex_search(s, am, struck_in)) note(struck, am[1].str());
-    if (std::regex_search(s, am, its_area)) note(passive ? struck : striker, am[1].str());
-    if (striker && striker == struck) struck = 0;
-    if (striker) {
-      const bool named = area.count(striker);
-      r.crash.striking.Set("V" + std::to_string(striker), Provenance::kStated);
-      r.crash.striking_area.Set(named ? area[striker] : DamageArea::kFront,
-                                named ? Provenance::kStated : Provenance::kInferred);
+    smatch am;
+    if (std::regex_search(s, am, kWithIts)) note(striker, am[1].str());
+    if (std::regex_search(s, am, kStruckIn)) note(struck, am[1].str());
+    if (std::regex_search(s, am, kItsArea)) note(passive ? struck : striker, am[1].str());
+    if (Has(s, regex(R"(\bhead[- ]on\b)"))) {
+      note(striker, "front");
+      note(struck, "front");
     }
-    if (struck) {
-      r.crash.struck.Set("V" + std::to_string(struck), Provenance::kStated);
-      if (area.count(struck)) r.crash.struck_area.Set(area[struck], Provenance::kStated);
-    } else if (striker && r.participant_count.value <= 1) {
-      r.crash.struck.Set("object", Provenance::kInferred);
+    if (Has(s, regex(R"(\brear[- ]end(?:ed|ing)?\b)"))) {
+      note(striker, "front");
+      note(struck, "rear");
     }
-    if (std::regex_search(s, std::regex(R"(intersection|junction|turn|crossing|driveway)")) &&
-        (r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction)) {
-      r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
+    // The next sentence often names the struck area ("... hit him in the door").
+    if (!area_words.count(struck) && struck > 0) {
+      for (size_t k = impact + 1; k < std::min(sentences.size(), impact + 3); ++k) {
+        const string& t = sentences[k].text;
+        if (!Has(t, kContact)) continue;
+        smatch tm;
+        static const regex kHitIn(R"(\b(?:hit|struck|impacted|contacted)\s+(?:him|her|them|it|v[1-9])\s+(?:in|on)\s+the\s+)" + kArea);
+        if (std::regex_search(t, tm, kHitIn)) note(struck, tm[1].str());
+        if (std::regex_search(t, tm, regex(R"(\bin the door\b)"))) note(struck, "left");
+      }
     }
-  } else {
+  } else if (r.participant_count.known()) {
     r.warnings.push_back("crash: no sentence describes a contact (struck, contacted, collided, ...)");
   }
-  if (r.crash.location.source == Provenance::kDefaulted &&
-      (r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction)) {
-    r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
+  const bool parked_struck =
+      struck > 0 && struck <= static_cast<int>(r.vehicles.size()) && r.vehicles[static_cast<size_t>(struck - 1)].parked.value;
+
+  // A vehicle that strikes with its front was moving: a stop read only from
+  // driver statements or the other vehicle's coding (paragraphs that switch
+  // drivers without naming them) does not stand against that.
+  if (striker > 0 && striker <= static_cast<int>(r.vehicles.size())) {
+    VehicleRecord& sv = r.vehicles[static_cast<size_t>(striker - 1)];
+    const AreaWords w = area_words.count(striker) ? area_words[striker] : AreaWords{};
+    if (sv.movement.value == Movement::kStopped && !narrative[static_cast<size_t>(striker)].stopped &&
+        !sv.parked.value && (w.front || !w.any())) {
+      sv.movement.Set(Movement::kStraight, Provenance::kInferred);
+    }
   }
 
-  // Crash type from movements, directions and areas.
-  auto vehicle = [&](const Field<std::string>& id) -> const VehicleRecord* {
-    for (const auto& v : r.vehicles) {
-      if (id.known() && v.id == id.value) return &v;
-    }
-    return nullptr;
-  };
-  const VehicleRecord* a = vehicle(r.crash.striking);
-  const VehicleRecord* b = vehicle(r.crash.struck);
-  if (!a && !r.vehicles.empty()) a = &r.vehicles[0];
-  if (!b && r.vehicles.size() > 1) b = &r.vehicles[a == &r.vehicles[0] ? 1 : 0];
+  // ---- Crash type: coded critical-event wording, then geometry and movements.
+  string coded;
+  for (const Sentence& s : sentences) {
+    if (s.kind == Kind::kCoding) coded += s.text;
+  }
+  const VehicleRecord* a = striker > 0 && striker <= static_cast<int>(r.vehicles.size()) ? &r.vehicles[static_cast<size_t>(striker - 1)] : nullptr;
+  const VehicleRecord* b = struck > 0 && struck <= static_cast<int>(r.vehicles.size()) ? &r.vehicles[static_cast<size_t>(struck - 1)] : nullptr;
+  if (!a && r.vehicles.size() >= 2) {
+    a = &r.vehicles[0];
+    b = &r.vehicles[1];
+  }
+  const AreaWords sa = striker && area_words.count(striker) ? area_words[striker] : AreaWords{};
+  const AreaWords sb = struck && area_words.count(struck) ? area_words[struck] : AreaWords{};
   CrashType type = CrashType::kUnknown;
-  if (r.participant_count.value <= 1 || !b) {
+  Provenance type_src = Provenance::kInferred;
+  const string impact_text = impact < sentences.size() ? sentences[impact].text : "";
+  const string before_impact = impact > 0 && impact < sentences.size() ? sentences[impact - 1].text : "";
+  if (r.participant_count.value <= 1 || !b || struck_object || parked_struck) {
     type = CrashType::kSingleVehicle;
   } else {
-    const auto turning = [](const VehicleRecord* v) {
-      return v->movement.value == Movement::kTurnLeft || v->movement.value == Movement::kTurnRight;
-    };
     const bool dirs = a->travel.known() && b->travel.known() && a->travel.value && b->travel.value;
     const Compass da = dirs ? *a->travel.value : Compass::kNorth, db = dirs ? *b->travel.value : Compass::kNorth;
-    const DamageArea sa = r.crash.striking_area.value, sb = r.crash.struck_area.value;
-    const bool side_hit = sb == DamageArea::kLeft || sb == DamageArea::kRight;
-    if (turning(a) || turning(b)) {
-      if (dirs && Perpendicular(da, db)) type = CrashType::kTurnIntoPath;
-      else type = CrashType::kTurnAcrossPath;
-    } else if (a->movement.value == Movement::kChangingLanes || b->movement.value == Movement::kChangingLanes ||
-               a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging) {
-      type = CrashType::kSideswipeSame;
-    } else if (dirs && Perpendicular(da, db)) {
-      type = CrashType::kAngle;
-    } else if (dirs && Opposite(da, db)) {
-      type = (sa == DamageArea::kFront && (sb == DamageArea::kFront || sb == DamageArea::kUnknown))
-                 ? CrashType::kHeadOn
-                 : CrashType::kSideswipeOpposite;
-    } else if (sb == DamageArea::kRear || b->movement.value == Movement::kStopped ||
-               b->movement.value == Movement::kSlowing) {
+    const bool same = dirs && da == db, opposite = dirs && Opposite(da, db), perpendicular = dirs && Perpendicular(da, db);
+    const bool a_turn = Turning(a->movement.value), b_turn = Turning(b->movement.value);
+    const VehicleRecord* turner = a_turn ? a : (b_turn ? b : nullptr);
+    const VehicleRecord* other = turner == a ? b : a;
+    static const regex kLaneChangeNow(R"(\bchang\w*\s+lanes?\b|\blane change|\bmerg(?:e|ed|es|ing)\b)");
+    const bool lane_change_at_impact = Has(impact_text, kLaneChangeNow) ||
+                                       a->movement.value == Movement::kChangingLanes ||
+                                       b->movement.value == Movement::kChangingLanes ||
+                                       a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging;
+    const bool struck_plain_rear = sb.rear && !sb.left && !sb.right;
+    const bool rear_end_coded =
+        Has(coded, regex(R"(\bother vehicle stopped|\bin lane,? (?:other vehicle )?stopped|same direction (?:with|at) (?:a )?higher speed|same direction while decelerating|same direction,? (?:with )?(?:lower|slower)|traveling in same direction while|other (?:motor )?vehicle (?:in lane )?(?:was )?stopped)"));
+    const bool into_path_coded = Has(coded, regex(R"(\bturning into (?:the )?(?:same|opposite) direction)"));
+    const bool across_coded = Has(coded, regex(R"(\bfrom crossing street,? across path|\bcrossing street,? across)"));
+    const bool opposite_coded = Has(coded, regex(R"(\bfrom (?:the )?opposite direction|\btraveling in (?:the )?opposite direction)"));
+    const bool adjacent_coded = Has(coded, regex(R"(\bfrom (?:the )?adjacent lane|\bsame direction\)? ?-? ?over (?:the )?(?:left|right) lane line)"));
+    // A turner from a side road, driveway or parking lot enters the other's
+    // path (turn into path); one turning off the road crosses it (turn across path).
+    static const regex kFromSide(
+        R"(\b(?:from|out of|exiting|leaving|pulling out|pulled out|entered the (?:road|roadway|street|highway) from)\b[^.]{0,40}?\b(?:side (?:road|street)|driveway|parking|lot|private|alley|station|stop sign|minor road|intersecting)|\bonto\b)");
+    bool turner_from_side = false;
+    if (turner) {
+      const size_t ti = static_cast<size_t>(turner->id[1] - '0');
+      for (const Segment& seg : segments) {
+        if (seg.vehicle == static_cast<int>(ti) && seg.sentence <= impact && sentences[seg.sentence].kind != Kind::kCoding &&
+            Has(seg.text, kFromSide)) {
+          turner_from_side = true;
+        }
+      }
+    }
+    if (Has(impact_text, regex(R"(\brear[- ]end)"))) {
       type = CrashType::kRearEnd;
-    } else if (side_hit && dirs) {
-      type = CrashType::kSideswipeSame;
-    } else if (side_hit) {
-      type = CrashType::kAngle;
-    } else if (sa == DamageArea::kFront && sb == DamageArea::kFront) {
+    } else if (Has(impact_text, regex(R"(\bhead[- ]on\b)"))) {
       type = CrashType::kHeadOn;
+    } else if (struck_plain_rear && sa.front && !opposite && !lane_change_at_impact) {
+      type = CrashType::kRearEnd;
+    } else if (lane_change_at_impact && !opposite && !turner_from_side) {
+      type = CrashType::kSideswipeSame;
+    } else if (turner) {
+      if (into_path_coded || turner_from_side) type = CrashType::kTurnIntoPath;
+      else if (perpendicular) type = CrashType::kTurnIntoPath;
+      else type = CrashType::kTurnAcrossPath;
+    } else if (rear_end_coded && !opposite && !perpendicular) {
+      type = CrashType::kRearEnd;
+    } else if (opposite || (opposite_coded && !dirs)) {
+      const bool fronts = sa.front && (sb.front || !sb.any());
+      type = fronts && !(sb.left || sb.right) ? CrashType::kHeadOn : CrashType::kSideswipeOpposite;
+      if (sb.front) type = CrashType::kHeadOn;
+    } else if (perpendicular || (across_coded && !dirs)) {
+      type = CrashType::kAngle;
+    } else if (same || (adjacent_coded && !dirs)) {
+      type = (sb.left || sb.right || sa.left || sa.right || adjacent_coded) ? CrashType::kSideswipeSame : CrashType::kRearEnd;
+    } else if (b->movement.value == Movement::kStopped || b->movement.value == Movement::kSlowing || sb.rear) {
+      type = CrashType::kRearEnd;
+    } else if (sa.front && sb.front) {
+      type = CrashType::kHeadOn;
+    } else if (sb.left || sb.right) {
+      type = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction
+                 ? CrashType::kAngle
+                 : CrashType::kSideswipeSame;
+    } else {
+      type_src = Provenance::kDefaulted;
+    }
+    (void)other;
+    (void)before_impact;
+  }
+  r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : type_src);
+
+  // ---- Damaged planes, now that the configuration is known.
+  auto plane = [&](const AreaWords& w, bool is_striker) -> DamageArea {
+    if (w.front && (w.left || w.right)) {
+      // A front corner is the front plane for the striker and in frontal
+      // configurations; a struck vehicle's front corner hit from the side is
+      // its side (how investigators code it).
+      if (is_striker || type == CrashType::kHeadOn || type == CrashType::kTurnAcrossPath ||
+          type == CrashType::kRearEnd) {
+        return DamageArea::kFront;
+      }
+      return w.left ? DamageArea::kLeft : DamageArea::kRight;
+    }
+    if (w.rear && (w.left || w.right)) {
+      if (type == CrashType::kRearEnd || (type == CrashType::kSingleVehicle && !is_striker)) return DamageArea::kRear;
+      return w.left ? DamageArea::kLeft : DamageArea::kRight;
+    }
+    if (w.front) return DamageArea::kFront;
+    if (w.rear) return DamageArea::kRear;
+    if (w.left) return DamageArea::kLeft;
+    if (w.right) return DamageArea::kRight;
+    return DamageArea::kUnknown;
+  };
+  if (striker) {
+    r.crash.striking.Set("V" + std::to_string(striker), Provenance::kStated);
+    if (area_words.count(striker)) {
+      r.crash.striking_area.Set(plane(area_words[striker], true), Provenance::kStated);
+      r.crash.striking_detail.Set(Detail(area_words[striker]), Provenance::kStated);
+    } else {
+      r.crash.striking_area.Set(DamageArea::kFront, Provenance::kInferred);
     }
   }
-  r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : Provenance::kInferred);
-  if (!r.crash.struck_area.known()) {
+  if (struck) {
+    r.crash.struck.Set("V" + std::to_string(struck), Provenance::kStated);
+    if (area_words.count(struck)) {
+      r.crash.struck_area.Set(plane(area_words[struck], false), Provenance::kStated);
+      r.crash.struck_detail.Set(Detail(area_words[struck]), Provenance::kStated);
+    }
+  } else if (struck_object) {
+    r.crash.struck.Set("object", Provenance::kInferred);
+  }
+  if (!r.crash.struck_area.known() && struck) {
+    const VehicleRecord* sv = &r.vehicles[static_cast<size_t>(struck - 1)];
+    const VehicleRecord* kv = striker ? &r.vehicles[static_cast<size_t>(striker - 1)] : nullptr;
     if (type == CrashType::kHeadOn) r.crash.struck_area.Set(DamageArea::kFront, Provenance::kInferred);
-    if (type == CrashType::kRearEnd) r.crash.struck_area.Set(DamageArea::kRear, Provenance::kInferred);
+    else if (type == CrashType::kRearEnd) r.crash.struck_area.Set(DamageArea::kRear, Provenance::kInferred);
+    else if (kv && kv->travel.known() && sv->travel.known() && kv->travel.value && sv->travel.value &&
+             Perpendicular(*kv->travel.value, *sv->travel.value)) {
+      // The striker comes from the side it is heading away from: heading
+      // west it arrives from the east, which is the right of a northbound car.
+      const int from = (static_cast<int>(*kv->travel.value) + 2) % 4;
+      const int heading = static_cast<int>(*sv->travel.value);
+      r.crash.struck_area.Set((from - heading + 4) % 4 == 1 ? DamageArea::kLeft : DamageArea::kRight,
+                              Provenance::kInferred);
+    }
   }
 
-  static const std::regex camera(R"(\b(?:view(?:ed)?|camera|viewpoint|perspective|seen)\s+from\s+(?:the\s+)?([a-z0-9' ]{3,40}))");
-  std::smatch cm;
-  if (std::regex_search(norm, cm, camera)) r.camera_hint.Set(cm[1].str(), Provenance::kStated);
-  if (!r.participant_count.known() && impact_sentence == sentences.size()) {
+  // ---- Location relative to a junction.
+  {
+    string pre;  // narrative up to and including the impact
+    for (size_t i = 0; i < sentences.size() && (i <= impact || impact == sentences.size()); ++i) {
+      if (sentences[i].kind == Kind::kNarrative) pre += sentences[i].text;
+    }
+    static const regex kAtIntersection(
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b)");
+    if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection)) {
+      r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
+    } else if (Has(pre, kDriveway)) {
+      r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
+    } else if (r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction) {
+      r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
+    } else if (Has(pre, kRamp)) {
+      r.crash.location.Set(CrashLocation::kRamp, Provenance::kInferred);
+    } else if (impact < sentences.size()) {
+      r.crash.location.Set(CrashLocation::kSegment, Provenance::kInferred);
+    }
+    if (r.crash.location.value == CrashLocation::kDriveway && r.road.kind.value == RoadKind::kStraight) {
+      r.road.kind.Set(RoadKind::kDriveway, Provenance::kInferred);
+    }
+  }
+
+  // ---- Camera hint: only when the text asks for a viewpoint.
+  {
+    static const regex kAsks(R"(\b(?:view|views|viewed|viewpoint|camera|perspective|angle|shot|render|show|video|seen|watch)\b)");
+    if (Has(norm, kAsks)) {
+      smatch m;
+      if (Has(norm, regex(R"(\bbird'?s[- ]eye|\boverhead\b|\btop[- ]down\b|\baerial\b|\bfrom above\b)"))) {
+        r.camera_hint.Set("overhead", Provenance::kStated);
+      } else if (std::regex_search(norm, m, regex(R"(\b(?:from\s+)?behind\s+v([1-9])\b|\bfollowing\s+v([1-9])\b|\bchase\b)"))) {
+        r.camera_hint.Set("behind V" + (m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : string("1")),
+                          Provenance::kStated);
+      } else if (std::regex_search(norm, m, regex(R"(\b(?:driver'?s?|dash ?cam|first[- ]person|inside|cockpit)\b[^.]{0,30}?(?:v([1-9]))?)"))) {
+        r.camera_hint.Set("driver V" + (m[1].matched ? m[1].str() : string("1")), Provenance::kStated);
+      } else if (Has(norm, regex(R"(\bfrom the side\b|\bside view\b|\bbroadside view\b)"))) {
+        r.camera_hint.Set("side", Provenance::kStated);
+      }
+    }
+  }
+  if (!r.participant_count.known() && impact == sentences.size()) {
     r.warnings.push_back("text: no crash description recognised (is it an English crash narrative?)");
   }
   return r;

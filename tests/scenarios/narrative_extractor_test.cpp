@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <random>
+#include <thread>
 
 namespace accsim {
 namespace {
@@ -109,6 +111,84 @@ TEST(NarrativeExtractorTest, JsonCarriesProvenanceOnEveryField) {
   EXPECT_EQ(j["crash"]["striking"]["source"], "stated");
   EXPECT_EQ(j["road"]["speed_limit_mps"]["source"], "defaulted");
   EXPECT_EQ(j["vehicles"][0]["movement"]["source"], "inferred");
+}
+
+
+TEST(NarrativeExtractorTest, MakeAliasesNumberWordsAndInjuryParagraphs) {
+  const auto r = kExtractor.Extract(
+      "The crash occurred on a four lane undivided roadway. The posted speed limit was forty-five mph. Vehicle one, "
+      "a 1998 Ford Taurus, was traveling westbound in the second lane. Vehicle two, a 2003 Honda motorcycle, was "
+      "traveling eastbound. The Ford turned left at the intersection in front of the motorcycle. The front of the "
+      "motorcycle struck the right side of the Ford. The 43-year old driver of the Ford was stopped by police and "
+      "transported to a hospital with injuries.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 45 * 0.44704, 1e-6);
+  EXPECT_EQ(r.road.lanes_total.value, 4);
+  EXPECT_EQ(r.vehicles[1].vehicle_class.value, VehicleClass::kMotorcycle);
+  EXPECT_EQ(r.vehicles[0].lane.value, 2);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);  // "stopped by police" is about people
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+}
+
+TEST(NarrativeExtractorTest, OneWayAndPerDirectionLanesOfV1sRoad) {
+  const auto r = kExtractor.Extract(
+      "This crash occurred at the intersection of an east-west roadway with two lanes in each direction, and a "
+      "one-way northbound roadway. Vehicle # 1 was traveling westbound on the left lane. Vehicle # 2 was traveling "
+      "northbound. At the intersection, the front of Vehicle # 2 contacted the left side of Vehicle # 1.");
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+  EXPECT_EQ(r.road.lanes_total.value, 4);
+  EXPECT_FALSE(r.road.one_way.value);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+  EXPECT_EQ(r.AreaOf("V1"), DamageArea::kLeft);
+  EXPECT_EQ(r.AreaOf("V2"), DamageArea::kFront);
+}
+
+TEST(NarrativeExtractorTest, ParkedVehicleIsAnObject) {
+  const auto r = kExtractor.Extract(
+      "Vehicle #1 was traveling south when it went over the right lane line and its right front impacted the left "
+      "rear of a parked and unoccupied Oldsmobile Ciera.");
+  EXPECT_EQ(r.participant_count.value, 2);
+  EXPECT_TRUE(r.vehicles[1].parked.value);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+}
+
+TEST(NarrativeExtractorTest, CameraHintOnlyWhenAsked) {
+  EXPECT_FALSE(kExtractor.Extract("V1 struck the rear of V2.").camera_hint.known());
+  const auto r = kExtractor.Extract("V1 struck the rear of V2. Show the crash from behind V2.");
+  EXPECT_EQ(r.camera_hint.value, "behind V2");
+  EXPECT_EQ(kExtractor.Extract("V1 hit V2 head-on; render a bird's-eye view.").camera_hint.value, "overhead");
+}
+
+TEST(NarrativeExtractorTest, RecordJsonRoundTripsAndBadJsonNamesTheField) {
+  const auto r = kExtractor.Extract(
+      "V1, a 2004 Ford F-150 pickup, was traveling north at 45 mph. V2 was stopped. V1 rear-ended V2.");
+  const nlohmann::json j = ToJson(r);
+  const AccidentRecord back = AccidentRecordFromJson(j);
+  EXPECT_EQ(ToJson(back), j);
+  nlohmann::json bad = j;
+  bad["vehicles"][1]["movement"]["value"] = "flying";
+  try {
+    AccidentRecordFromJson(bad);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("vehicles[1].movement.value"), std::string::npos) << e.what();
+  }
+}
+
+TEST(NarrativeExtractorTest, SameTextSameRecordAcrossThreads) {
+  const std::string text =
+      "V1 was eastbound and turned left. V2 was westbound at 40 mph. The front of V2 struck the right side of V1.";
+  const nlohmann::json want = ToJson(kExtractor.Extract(text));
+  std::vector<std::thread> threads;
+  std::atomic<int> same{0};
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&] { same += ToJson(kExtractor.Extract(text)) == want; });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(same, 4);
 }
 
 }  // namespace

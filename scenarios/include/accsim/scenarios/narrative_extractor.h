@@ -1,12 +1,20 @@
 // Deterministic, offline extraction of an AccidentRecord from a crash
-// narrative (NHTSA / police style or a user's short description). Rules
-// over normalised sentences: vehicle references ("V1", "Vehicle one",
-// "vehicle #2"), number words, mph and km/h, directions, movements, damage
-// areas and contact verbs; injury and driver-history sentences are ignored
-// for movements. Thread-safe (no state); never throws on text: what it
-// cannot read it leaves defaulted, with a warning.
+// narrative (NHTSA / police style or a user's short description).
+//
+// Rules over normalised sentences: vehicle references ("V1", "Vehicle one",
+// "vehicle #2", "the Ford" once the Ford was introduced), number words, mph
+// and km/h, compass directions, movement verbs (with intentions such as
+// "waiting to turn" kept apart from turning), damage-area phrases and
+// contact verbs in active and passive voice, road descriptions tied to the
+// vehicle that used them, and NHTSA's coded critical-event wording.
+// Sentences about people (age, injuries, medication) are not used for
+// motion. docs/extraction.md lists the rules.
+//
+// Thread-safe: Extract is const and the object holds no state. Never
+// throws on text: what it cannot read stays defaulted, with a warning.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -17,7 +25,8 @@ namespace accsim {
 class NarrativeExtractor {
  public:
   // Text beyond this many bytes is ignored (with a warning): real reports
-  // are a few kilobytes.
+  // are a few kilobytes, and the rules are linear in the text only per
+  // sentence.
   static constexpr size_t kMaxBytes = 200000;
 
   AccidentRecord Extract(std::string_view text) const;
