@@ -1,36 +1,85 @@
 #include "accsim/scenarios/extraction_eval.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 namespace accsim {
+
+const std::vector<std::string>& ExtractionAttributes() {
+  static const std::vector<std::string> kNames = {"lane_count",      "speed_limit", "collision_location",
+                                                  "driving_actions", "crash_type",  "participant_count"};
+  return kNames;
+}
+
 namespace {
 
 std::string Get(const nlohmann::json& j, const char* key) {
-  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
+  return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
 }
 
-// NASS pre-event movement -> Movement ("negotiating a curve" and
-// "starting in traffic lane" are going straight along the road).
-Movement MovementLabel(const std::string& s) {
-  if (s.rfind("Going straight", 0) == 0 || s.rfind("Negotiating a curve", 0) == 0 ||
-      s.rfind("Starting in traffic lane", 0) == 0 || s.rfind("Leaving a parking", 0) == 0 ||
-      s.rfind("Accelerating", 0) == 0)
+std::string Lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool StartsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+std::optional<int> LeadingInt(const std::string& s) {
+  size_t i = 0;
+  while (i < s.size() && s[i] == ' ') ++i;
+  if (i >= s.size() || !std::isdigit(static_cast<unsigned char>(s[i]))) return std::nullopt;
+  int v = 0;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) && v < 100000) v = v * 10 + (s[i++] - '0');
+  return v;
+}
+
+std::optional<int> CountWord(const std::string& s) {
+  if (auto n = LeadingInt(s)) return n;
+  static const std::vector<std::string> kWords = {"one", "two", "three", "four", "five", "six", "seven", "eight"};
+  const std::string l = Lower(s);
+  for (size_t i = 0; i < kWords.size(); ++i) {
+    if (StartsWith(l, kWords[i].c_str())) return static_cast<int>(i + 1);
+  }
+  return std::nullopt;
+}
+
+// NASS pre-event movement -> Movement. Negotiating a curve, starting in the
+// lane and accelerating are all "going straight" along the road; leaving a
+// parking position enters the traffic lane, which the record calls merging.
+// Other/unknown codes are not scored.
+std::optional<Movement> MovementLabel(const std::string& raw) {
+  const std::string s = Lower(raw);
+  if (StartsWith(s, "going straight") || StartsWith(s, "negotiating a curve") ||
+      StartsWith(s, "starting in traffic lane") || StartsWith(s, "accelerating")) {
     return Movement::kStraight;
-  if (s.rfind("Stopped", 0) == 0) return Movement::kStopped;
-  if (s.rfind("Decelerating", 0) == 0) return Movement::kSlowing;
-  if (s.rfind("Turning left", 0) == 0) return Movement::kTurnLeft;
-  if (s.rfind("Turning right", 0) == 0) return Movement::kTurnRight;
-  if (s.rfind("Changing lanes", 0) == 0) return Movement::kChangingLanes;
-  if (s.rfind("Merging", 0) == 0) return Movement::kMerging;
-  if (s.rfind("Backing", 0) == 0) return Movement::kBacking;
-  if (s.rfind("Passing", 0) == 0) return Movement::kPassing;
-  return Movement::kUnknown;
+  }
+  if (StartsWith(s, "leaving a parking") || StartsWith(s, "merging") || StartsWith(s, "entering a parking")) {
+    return Movement::kMerging;
+  }
+  if (StartsWith(s, "stopped")) return Movement::kStopped;
+  if (StartsWith(s, "decelerating")) return Movement::kSlowing;
+  if (StartsWith(s, "turning left") || StartsWith(s, "making a u-turn")) return Movement::kTurnLeft;
+  if (StartsWith(s, "turning right")) return Movement::kTurnRight;
+  if (StartsWith(s, "changing lanes")) return Movement::kChangingLanes;
+  if (StartsWith(s, "backing")) return Movement::kBacking;
+  if (StartsWith(s, "passing")) return Movement::kPassing;
+  return std::nullopt;
 }
 
-// NHTSA crash-type code (GES/NASS accident type, 1-99) -> CrashType.
-CrashType CrashTypeLabel(int code) {
+// NHTSA (GES/NASS) accident-type code -> CrashType category:
+//   1-19 single driver (road departure, forward impact)
+//  20-43 same direction rear-end (incl. its forward-impact variants)
+//  44-49 same direction sideswipe/angle
+//  50-63 opposite direction head-on (incl. forward impact)
+//  64-67 opposite direction sideswipe/angle
+//  68-75 turn across path; 76-85 turn into path; 86-91 straight paths (angle)
+//  92-99 backing / other / unknown: not scored.
+std::optional<CrashType> CrashTypeLabel(int code) {
   if (code >= 1 && code <= 19) return CrashType::kSingleVehicle;
   if (code >= 20 && code <= 43) return CrashType::kRearEnd;
   if (code >= 44 && code <= 49) return CrashType::kSideswipeSame;
@@ -39,126 +88,225 @@ CrashType CrashTypeLabel(int code) {
   if (code >= 68 && code <= 75) return CrashType::kTurnAcrossPath;
   if (code >= 76 && code <= 85) return CrashType::kTurnIntoPath;
   if (code >= 86 && code <= 91) return CrashType::kAngle;
-  return CrashType::kUnknown;
+  return std::nullopt;
 }
 
-DamageArea AreaLabel(const std::string& s) {
+// NASS relation to junction -> CrashLocation.
+std::optional<CrashLocation> LocationLabel(const std::string& raw) {
+  const std::string s = Lower(raw);
+  if (s.empty() || StartsWith(s, "unknown")) return std::nullopt;
+  if (s.find("ramp") != std::string::npos || s.find("interchange area related") != std::string::npos) {
+    return CrashLocation::kRamp;
+  }
+  if (s.find("intersection") != std::string::npos) return CrashLocation::kJunction;
+  if (s.find("driveway") != std::string::npos || s.find("alley") != std::string::npos) return CrashLocation::kDriveway;
+  if (s.find("non-junction") != std::string::npos) return CrashLocation::kSegment;
+  return std::nullopt;
+}
+
+std::optional<DamageArea> AreaLabel(const std::string& s) {
   if (s == "Front") return DamageArea::kFront;
-  if (s == "Back") return DamageArea::kRear;
-  if (s == "Left Side") return DamageArea::kLeft;
-  if (s == "Right Side") return DamageArea::kRight;
-  return DamageArea::kUnknown;
+  if (s == "Back" || s == "Rear") return DamageArea::kRear;
+  if (s == "Left Side" || s == "Left") return DamageArea::kLeft;
+  if (s == "Right Side" || s == "Right") return DamageArea::kRight;
+  return std::nullopt;
+}
+
+// The first vehicle (V1 first) whose label `key` gives a value through `read`.
+template <typename T, typename F>
+std::optional<T> FirstVehicle(const nlohmann::json& vehicles, const char* key, F&& read) {
+  for (const auto& v : vehicles) {
+    if (auto x = read(Get(v, key))) return x;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> LimitKmh(const std::string& s) {
+  if (auto n = LeadingInt(s)) return static_cast<double>(*n);
+  return std::nullopt;
+}
+
+std::string Fmt(double x) {
+  std::ostringstream os;
+  os.precision(3);
+  os << x;
+  return os.str();
 }
 
 }  // namespace
 
 ExtractionScore EvaluateExtraction(const std::string& dir, const NarrativeExtractor& extractor) {
+  return EvaluateExtraction(dir, [&extractor](std::string_view t) { return extractor.Extract(t); });
+}
+
+ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extract) {
   const std::string path = dir + "/labels.jsonl";
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot open (expected labels.jsonl in the folder)");
   ExtractionScore score;
   std::map<std::string, double> hits;
   std::map<std::string, std::map<std::string, double>> group_hits;
+  std::map<std::string, std::map<std::string, int>> group_scored;
+  double area_hits = 0;
+  int area_scored = 0;
   std::string line;
   int line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
     if (line.find_first_not_of(" \r\t") == std::string::npos) continue;
+    const std::string where = path + ":" + std::to_string(line_no);
     nlohmann::json row;
     try {
       row = nlohmann::json::parse(line);
     } catch (const nlohmann::json::parse_error& e) {
-      throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": malformed JSON (" + e.what() + ")");
+      throw std::invalid_argument(where + ": malformed JSON (" + e.what() + ")");
     }
-    if (!row.contains("narrative") || !row["narrative"].is_string() || !row.contains("vehicles") ||
-        !row["vehicles"].is_array() || row["vehicles"].empty()) {
-      throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": needs 'narrative' and 'vehicles'");
+    if (!row.is_object()) throw std::invalid_argument(where + ": expected a JSON object");
+    if (!row.contains("narrative") || !row["narrative"].is_string()) {
+      throw std::invalid_argument(where + ": field 'narrative' is missing or not a string");
     }
-    const std::string id = Get(row, "file").empty() ? "line " + std::to_string(line_no) : Get(row, "file");
-    const std::string group = id.find('/') != std::string::npos ? id.substr(0, id.find('/')) : "all";
-    const AccidentRecord r = extractor.Extract(row["narrative"].get<std::string>());
-    const nlohmann::json& v1 = row["vehicles"][0];
+    if (!row.contains("vehicles") || !row["vehicles"].is_array() || row["vehicles"].empty()) {
+      throw std::invalid_argument(where + ": field 'vehicles' is missing or not a non-empty array");
+    }
+    const std::string file = Get(row, "file");
+    const std::string id = file.empty() ? "line " + std::to_string(line_no) : file;
+    const size_t slash = file.find('/');
+    const std::string group =
+        slash != std::string::npos && file.find('/', slash + 1) == std::string::npos ? file.substr(0, slash) : "all";
+    const AccidentRecord r = extract(row["narrative"].get<std::string>());
+    const nlohmann::json& vehicles = row["vehicles"];
     std::map<std::string, double> got;
     auto miss = [&](const std::string& attr, const std::string& want, const std::string& have) {
       score.mismatches.push_back(id + ": " + attr + ": want " + want + ", got " + have);
     };
 
-    // Participant count: the coded number of vehicles.
-    const int want_count = std::atoi(Get(row, "vehcount").c_str());
-    got["participant_count"] = want_count == r.participant_count.value;
-    if (!got["participant_count"]) miss("participant_count", std::to_string(want_count), std::to_string(r.participant_count.value));
+    // Participant count: vehcount (NMVCCS) or the vehicles summarised (CIREN).
+    std::optional<int> want_count = LeadingInt(Get(row, "vehcount"));
+    if (!want_count && row.contains("vehicle_summaries") && row["vehicle_summaries"].is_array()) {
+      want_count = static_cast<int>(row["vehicle_summaries"].size());
+    }
+    if (!want_count) want_count = static_cast<int>(vehicles.size());
+    got["participant_count"] = *want_count == r.participant_count.value;
+    if (!got["participant_count"]) {
+      miss("participant_count", std::to_string(*want_count), std::to_string(r.participant_count.value));
+    }
 
-    // Speed limit: V1's coded km/h within 3 km/h; "no statutory limit" is
-    // right when the text states none.
-    const std::string limit = Get(v1, "speed_limit_kmph");
+    // Speed limit: V1's posted limit (the next vehicle's when V1 has none
+    // coded), within 3 km/h; no limit coded anywhere is right when none is stated.
+    std::optional<double> want_kmh = FirstVehicle<double>(vehicles, "speed_limit_kmph", LimitKmh);
+    if (!want_kmh) want_kmh = FirstVehicle<double>(vehicles, "posted_speed_limit_kmph", LimitKmh);
     const double got_kmh = r.road.speed_limit_mps.value * 3.6;
-    if (!limit.empty() && std::isdigit(static_cast<unsigned char>(limit[0]))) {
-      got["speed_limit"] = r.road.speed_limit_mps.known() && std::abs(got_kmh - std::stod(limit)) <= 3.0;
+    if (want_kmh) {
+      got["speed_limit"] = r.road.speed_limit_mps.known() && std::abs(got_kmh - *want_kmh) <= 3.0;
     } else {
       got["speed_limit"] = !r.road.speed_limit_mps.known();
     }
-    if (!got["speed_limit"]) miss("speed_limit", limit, r.road.speed_limit_mps.known() ? std::to_string(got_kmh) : "none");
+    if (!got["speed_limit"]) {
+      miss("speed_limit", want_kmh ? Fmt(*want_kmh) : "none", r.road.speed_limit_mps.known() ? Fmt(got_kmh) : "none");
+    }
 
-    // Lane count: V1's coded travel lanes: both directions on undivided
-    // roads, V1's direction on divided roads, all lanes on one-way roads.
-    const int want_lanes = std::atoi(Get(v1, "num_travel_lanes_code").c_str());
-    const bool coded_divided = Get(v1, "trafficway_flow").rfind("Divided", 0) == 0;
-    const int got_lanes = (r.road.divided.value || coded_divided) && !r.road.one_way.value
-                              ? r.road.lanes_per_direction.value
-                              : r.road.lanes_total.value;
-    got["lane_count"] = want_lanes == got_lanes;
-    if (!got["lane_count"]) miss("lane_count", std::to_string(want_lanes), std::to_string(got_lanes));
+    // Lane count: V1's travel lanes as NASS counts them: all lanes of a
+    // one-way road, V1's direction on a divided road, both directions otherwise.
+    std::optional<int> want_lanes = FirstVehicle<int>(vehicles, "num_travel_lanes_code", LeadingInt);
+    if (!want_lanes) want_lanes = FirstVehicle<int>(vehicles, "travel_lanes", CountWord);
+    if (want_lanes) {
+      const int got_lanes = r.road.one_way.value   ? r.road.lanes_total.value
+                            : r.road.divided.value ? r.road.lanes_per_direction.value
+                                                   : r.road.lanes_total.value;
+      got["lane_count"] = *want_lanes == got_lanes;
+      if (!got["lane_count"]) miss("lane_count", std::to_string(*want_lanes), std::to_string(got_lanes));
+    }
 
-    // Collision location: the first harmful event's striker and struck
-    // areas (Front / Back / Left Side / Right Side); an uncoded area (not a
-    // motor vehicle, noncollision) is not scored.
-    if (row.contains("events") && row["events"].is_array() && !row["events"].empty()) {
-      const auto& e = row["events"][0];
-      const DamageArea ws = AreaLabel(Get(e, "striker_area_damage")), wh = AreaLabel(Get(e, "hit_area_damage"));
-      const std::string striker = "V" + Get(e, "striker_vehicle");
-      bool ok = true;
-      DamageArea gs = r.crash.striking_area.value, gh = r.crash.struck_area.value;
-      if (r.crash.striking.value != striker && r.crash.struck.value == striker) std::swap(gs, gh);
-      if (ws != DamageArea::kUnknown) ok = ok && ws == gs;
-      if (wh != DamageArea::kUnknown) ok = ok && wh == gh;
-      got["collision_location"] = ok;
-      if (!ok) {
-        miss("collision_location", std::string(ToString(ws)) + "/" + std::string(ToString(wh)),
-             std::string(ToString(gs)) + "/" + std::string(ToString(gh)));
+    // Collision location: V1's relation to junction.
+    if (auto want = FirstVehicle<CrashLocation>(vehicles, "relation_to_junction", LocationLabel)) {
+      got["collision_location"] = *want == r.crash.location.value;
+      if (!got["collision_location"]) {
+        miss("collision_location", std::string(ToString(*want)), std::string(ToString(r.crash.location.value)));
       }
-    } else {
-      got["collision_location"] = 1.0;
     }
 
-    // Driving actions: each vehicle's coded pre-event movement, averaged.
-    double actions = 0.0;
-    int scored = 0;
-    for (size_t i = 0; i < row["vehicles"].size(); ++i) {
-      const Movement want = MovementLabel(Get(row["vehicles"][i], "pre_event_movement"));
-      if (want == Movement::kUnknown) continue;
-      ++scored;
-      const Movement have = i < r.vehicles.size() ? r.vehicles[i].movement.value : Movement::kUnknown;
-      actions += want == have;
-      if (want != have) miss("driving_actions V" + std::to_string(i + 1), std::string(ToString(want)), std::string(ToString(have)));
+    // Driving actions: each vehicle's coded pre-event movement, averaged
+    // over the vehicles that have one.
+    {
+      double ok = 0.0;
+      int n = 0;
+      for (size_t i = 0; i < vehicles.size(); ++i) {
+        const auto want = MovementLabel(Get(vehicles[i], "pre_event_movement"));
+        if (!want) continue;
+        ++n;
+        const Movement have = i < r.vehicles.size() ? r.vehicles[i].movement.value : Movement::kUnknown;
+        ok += *want == have;
+        if (*want != have) {
+          miss("driving_actions V" + std::to_string(i + 1), std::string(ToString(*want)), std::string(ToString(have)));
+        }
+      }
+      if (n > 0) got["driving_actions"] = ok / n;
     }
-    got["driving_actions"] = scored ? actions / scored : 1.0;
 
-    // Crash type: V1's NHTSA crash-type code, by category.
-    const CrashType want_type = CrashTypeLabel(std::atoi(Get(v1, "crash_type_code").c_str()));
-    got["crash_type"] = want_type == CrashType::kUnknown || want_type == r.crash.type.value;
-    if (!got["crash_type"]) miss("crash_type", std::string(ToString(want_type)), std::string(ToString(r.crash.type.value)));
+    // Crash type: V1's NHTSA crash-type code (CIREN: the code leading "87 87 T-BONE ..."), by category.
+    if (auto want = FirstVehicle<CrashType>(vehicles, "crash_type_code", [](const std::string& s) {
+          auto c = LeadingInt(s);
+          return c ? CrashTypeLabel(*c) : std::nullopt;
+        })) {
+      got["crash_type"] = *want == r.crash.type.value;
+      if (!got["crash_type"]) miss("crash_type", std::string(ToString(*want)), std::string(ToString(r.crash.type.value)));
+    } else if (!vehicles[0].contains("crash_type_code")) {
+      if (auto w = FirstVehicle<CrashType>(vehicles, "crash_type", [](const std::string& s) {
+            auto c = LeadingInt(s);
+            return c ? CrashTypeLabel(*c) : std::nullopt;
+          })) {
+        got["crash_type"] = *w == r.crash.type.value;
+        if (!got["crash_type"]) miss("crash_type", std::string(ToString(*w)), std::string(ToString(r.crash.type.value)));
+      }
+    }
+
+    // Extra: damaged planes of both vehicles in the first vehicle-to-vehicle event.
+    if (row.contains("events") && row["events"].is_array()) {
+      for (const auto& e : row["events"]) {
+        std::string hit = Get(e, "object_hit");
+        if (hit.empty()) hit = Get(e, "contacted");
+        if (!StartsWith(hit, "Vehicle#")) continue;
+        std::string first = Get(e, "striker_vehicle");
+        if (first.empty()) first = Get(e, "veh");
+        std::optional<DamageArea> a1 = AreaLabel(Get(e, "striker_area_damage"));
+        if (!a1) a1 = AreaLabel(Get(e, "area_of_damage"));
+        std::optional<DamageArea> a2 = AreaLabel(Get(e, "hit_area_damage"));
+        if (!a2) a2 = AreaLabel(Get(e, "contacted_area_of_damage"));
+        const std::string second = hit.substr(8);
+        for (const auto& [veh, want] : {std::pair{first, a1}, std::pair{second, a2}}) {
+          if (!want) continue;
+          const DamageArea have = r.AreaOf("V" + veh);
+          ++area_scored;
+          area_hits += have == *want;
+          if (have != *want) {
+            miss("impact_area V" + veh, std::string(ToString(*want)), std::string(ToString(have)));
+          }
+        }
+        break;
+      }
+    }
 
     ++score.n;
     ++score.group_sizes[group];
     for (const auto& [k, v] : got) {
       hits[k] += v;
+      ++score.scored[k];
       group_hits[group][k] += v;
+      ++group_scored[group][k];
     }
   }
   if (score.n == 0) throw std::invalid_argument(path + ": no labelled cases");
-  for (const auto& a : ExtractionAttributes()) score.attributes[a] = hits[a] / score.n;
+  for (const auto& a : ExtractionAttributes()) {
+    const int n = score.scored.count(a) ? score.scored.at(a) : 0;
+    score.scored[a] = n;
+    score.attributes[a] = n ? hits[a] / n : 0.0;
+  }
+  score.extra["impact_areas"] = area_scored ? area_hits / area_scored : 0.0;
   for (const auto& [g, h] : group_hits) {
-    for (const auto& a : ExtractionAttributes()) score.by_group[g][a] = h.count(a) ? h.at(a) / score.group_sizes[g] : 0.0;
+    for (const auto& a : ExtractionAttributes()) {
+      const int n = group_scored[g].count(a) ? group_scored[g][a] : 0;
+      score.by_group[g][a] = n ? (h.count(a) ? h.at(a) : 0.0) / n : 0.0;
+    }
   }
   return score;
 }
@@ -166,7 +314,7 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const NarrativeExtrac
 nlohmann::json ToJson(const ExtractionScore& s) {
   nlohmann::json groups = nlohmann::json::object();
   for (const auto& [g, attrs] : s.by_group) groups[g] = {{"attributes", attrs}, {"n", s.group_sizes.at(g)}};
-  return {{"attributes", s.attributes}, {"n", s.n}, {"groups", groups}};
+  return {{"attributes", s.attributes}, {"n", s.n}, {"scored", s.scored}, {"extra", s.extra}, {"groups", groups}};
 }
 
 }  // namespace accsim
