@@ -1,8 +1,18 @@
 #include "accsim/scenarios/llm_extractor.h"
 
-#include <httplib.h>
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -16,8 +26,9 @@ constexpr double kKmhToMps = 1.0 / 3.6;
 constexpr size_t kMaxPromptChars = 12000;
 
 struct Endpoint {
-  std::string host_port;  // "http://host:port"
-  std::string path;       // "/v1/chat/completions"
+  std::string host;
+  std::string port = "80";
+  std::string path;  // "/v1/chat/completions"
 };
 
 Endpoint ParseUrl(const std::string& url) {
@@ -26,11 +37,19 @@ Endpoint ParseUrl(const std::string& url) {
   }
   if (url.rfind("http://", 0) != 0) throw std::invalid_argument("llm.url: must start with http:// (got '" + url + "')");
   const size_t slash = url.find('/', 7);
+  const std::string authority = url.substr(7, slash == std::string::npos ? std::string::npos : slash - 7);
   Endpoint e;
-  e.host_port = url.substr(0, slash);
+  const size_t colon = authority.rfind(':');
+  e.host = colon == std::string::npos ? authority : authority.substr(0, colon);
+  if (colon != std::string::npos) e.port = authority.substr(colon + 1);
+  if (!e.host.empty() && e.host.front() == '[' && e.host.back() == ']') e.host = e.host.substr(1, e.host.size() - 2);
+  if (e.host.empty()) throw std::invalid_argument("llm.url: no host in '" + url + "'");
+  if (e.port.empty() || e.port.size() > 5 || e.port.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoi(e.port) < 1 || std::stoi(e.port) > 65535) {
+    throw std::invalid_argument("llm.url: bad port in '" + url + "'");
+  }
   std::string path = slash == std::string::npos ? "" : url.substr(slash);
   while (!path.empty() && path.back() == '/') path.pop_back();
-  if (e.host_port.size() <= 7) throw std::invalid_argument("llm.url: no host in '" + url + "'");
   if (path.size() >= 17 && path.compare(path.size() - 17, 17, "/chat/completions") == 0) {
     e.path = path;
   } else if (path.size() >= 3 && path.compare(path.size() - 3, 3, "/v1") == 0) {
@@ -39,6 +58,128 @@ Endpoint ParseUrl(const std::string& url) {
     e.path = path + "/v1/chat/completions";
   }
   return e;
+}
+
+// A socket closed on every path out.
+class Socket {
+ public:
+  explicit Socket(int fd) : fd_(fd) {}
+  ~Socket() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Socket(const Socket&) = delete;
+  Socket& operator=(const Socket&) = delete;
+  int fd() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
+struct HttpReply {
+  int status = 0;
+  std::string body;
+};
+
+// One HTTP/1.1 POST with "Connection: close" (plain HTTP, as local model
+// servers speak it), bounded by one deadline for connect, send and receive.
+// A few dozen lines of sockets keep the library free of a client dependency.
+HttpReply HttpPost(const Endpoint& e, const std::string& body, const std::string& api_key, double timeout_s) {
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
+  const auto remaining_ms = [&]() {
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    return static_cast<int>(std::max<long long>(0, std::min<long long>(ms, 1 << 30)));
+  };
+  const std::string where = "http://" + e.host + ":" + e.port + e.path;
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  if (const int rc = ::getaddrinfo(e.host.c_str(), e.port.c_str(), &hints, &found); rc != 0 || !found) {
+    throw std::runtime_error("llm: no answer from " + where + " (cannot resolve host: " + ::gai_strerror(rc) + ")");
+  }
+  std::string error = "connection refused";
+  int connected = -1;
+  for (addrinfo* ai = found; ai && connected < 0; ai = ai->ai_next) {
+    const int fd = ::socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC, ai->ai_protocol);
+    if (fd < 0) continue;
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL, 0) | O_NONBLOCK);
+    int rc = ::connect(fd, ai->ai_addr, ai->ai_addrlen);
+    if (rc != 0 && errno == EINPROGRESS) {
+      pollfd p{fd, POLLOUT, 0};
+      int so_error = ETIMEDOUT;
+      if (::poll(&p, 1, remaining_ms()) == 1) {
+        socklen_t len = sizeof(so_error);
+        ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &so_error, &len);
+      }
+      rc = so_error == 0 ? 0 : -1;
+      if (rc != 0) error = std::strerror(so_error);
+    } else if (rc != 0) {
+      error = std::strerror(errno);
+    }
+    if (rc == 0) {
+      connected = fd;
+    } else {
+      ::close(fd);
+    }
+  }
+  ::freeaddrinfo(found);
+  if (connected < 0) throw std::runtime_error("llm: no answer from " + where + " (" + error + ")");
+  const Socket sock(connected);
+  const int fd = sock.fd();
+
+  std::string request = "POST " + e.path + " HTTP/1.1\r\nHost: " + e.host + ":" + e.port +
+                        "\r\nContent-Type: application/json\r\nAccept: application/json\r\nContent-Length: " +
+                        std::to_string(body.size()) + "\r\nConnection: close\r\n";
+  if (!api_key.empty()) request += "Authorization: Bearer " + api_key + "\r\n";
+  request += "\r\n" + body;
+  size_t sent = 0;
+  while (sent < request.size()) {
+    pollfd p{fd, POLLOUT, 0};
+    if (::poll(&p, 1, remaining_ms()) != 1) throw std::runtime_error("llm: timed out sending to " + where);
+    const ssize_t n = ::send(fd, request.data() + sent, request.size() - sent, MSG_NOSIGNAL);
+    if (n <= 0) throw std::runtime_error("llm: no answer from " + where + " (send failed: " + std::strerror(errno) + ")");
+    sent += static_cast<size_t>(n);
+  }
+  constexpr size_t kMaxReply = 16u << 20;  // a chat answer is kilobytes
+  std::string raw;
+  char buf[8192];
+  for (;;) {
+    pollfd p{fd, POLLIN, 0};
+    const int ready = ::poll(&p, 1, remaining_ms());
+    if (ready != 1) throw std::runtime_error("llm: timed out waiting for " + where);
+    const ssize_t n = ::recv(fd, buf, sizeof(buf), 0);
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+    if (n < 0) throw std::runtime_error("llm: no answer from " + where + " (" + std::strerror(errno) + ")");
+    if (n == 0) break;
+    raw.append(buf, static_cast<size_t>(n));
+    if (raw.size() > kMaxReply) throw std::runtime_error("llm: the reply from " + where + " is larger than 16 MB");
+  }
+  const size_t head_end = raw.find("\r\n\r\n");
+  if (raw.rfind("HTTP/", 0) != 0 || head_end == std::string::npos) {
+    throw std::runtime_error("llm: " + where + " did not answer with HTTP");
+  }
+  HttpReply reply;
+  const size_t sp = raw.find(' ');
+  reply.status = sp != std::string::npos && sp < head_end ? std::atoi(raw.c_str() + sp + 1) : 0;
+  std::string head = raw.substr(0, head_end);
+  for (char& c : head) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string payload = raw.substr(head_end + 4);
+  if (head.find("transfer-encoding: chunked") != std::string::npos) {
+    std::string joined;
+    size_t at = 0;
+    while (at < payload.size()) {
+      const size_t eol = payload.find("\r\n", at);
+      if (eol == std::string::npos) break;
+      const unsigned long size = std::strtoul(payload.substr(at, eol - at).c_str(), nullptr, 16);
+      if (size == 0 || eol + 2 + size > payload.size()) break;
+      joined += payload.substr(eol + 2, size);
+      at = eol + 2 + size + 2;
+    }
+    payload = std::move(joined);
+  }
+  reply.body = std::move(payload);
+  return reply;
 }
 
 const char* kSchema = R"({
@@ -279,30 +420,20 @@ LlmExtractor::LlmExtractor(LlmConfig config) : config_(std::move(config)) { Vali
 
 nlohmann::json LlmExtractor::Ask(std::string_view narrative) const {
   const Endpoint e = ParseUrl(config_.url);
-  httplib::Client client(e.host_port);
-  const auto sec = static_cast<time_t>(config_.timeout_s);
-  const auto usec = static_cast<time_t>((config_.timeout_s - static_cast<double>(sec)) * 1e6);
-  client.set_connection_timeout(sec, usec);
-  client.set_read_timeout(sec, usec);
-  client.set_write_timeout(sec, usec);
-  httplib::Headers headers;
-  if (!config_.api_key.empty()) headers.emplace("Authorization", "Bearer " + config_.api_key);
   const nlohmann::json body = {{"model", config_.model},
                                {"messages", BuildLlmMessages(narrative)},
                                {"temperature", 0},
                                {"max_tokens", config_.max_tokens},
+                               {"stream", false},
                                {"response_format", {{"type", "json_object"}}}};
-  const auto res = client.Post(e.path, headers, body.dump(), "application/json");
-  if (!res) {
-    throw std::runtime_error("llm: no answer from " + config_.url + e.path + " (" + httplib::to_string(res.error()) + ")");
-  }
-  if (res->status != 200) {
-    throw std::runtime_error("llm: " + config_.url + e.path + " answered HTTP " + std::to_string(res->status) + ": " +
-                             res->body.substr(0, 200));
+  const HttpReply res = HttpPost(e, body.dump(), config_.api_key, config_.timeout_s);
+  if (res.status != 200) {
+    throw std::runtime_error("llm: " + config_.url + e.path + " answered HTTP " + std::to_string(res.status) + ": " +
+                             res.body.substr(0, 200));
   }
   nlohmann::json reply;
   try {
-    reply = nlohmann::json::parse(res->body);
+    reply = nlohmann::json::parse(res.body);
   } catch (const nlohmann::json::parse_error&) {
     throw std::runtime_error("llm: the server's reply is not JSON");
   }

@@ -1,10 +1,16 @@
 #include "accsim/scenarios/llm_extractor.h"
 
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
-#include <httplib.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -12,53 +18,104 @@ namespace accsim {
 namespace {
 
 // A minimal OpenAI-compatible chat server on 127.0.0.1 and an ephemeral
-// port. It answers every completion with `content` and stops when the test
-// ends (destructor), or by itself after kLifetime should a test hang.
+// port, over plain sockets. It answers every completion with `content`
+// (HTTP `status`) and stops when the test ends, or by itself after
+// kLifetime should a test hang.
 class FakeChatServer {
  public:
   explicit FakeChatServer(std::string content, int status = 200) : content_(std::move(content)), status_(status) {
-    server_.Post("/v1/chat/completions", [this](const httplib::Request& req, httplib::Response& res) {
-      last_request_ = req.body;
-      ++requests_;
-      if (status_ != 200) {
-        res.status = status_;
-        res.set_content("model not loaded", "text/plain");
-        return;
-      }
-      const nlohmann::json reply = {
-          {"id", "chatcmpl-test"},
-          {"object", "chat.completion"},
-          {"choices", {{{"index", 0}, {"message", {{"role", "assistant"}, {"content", content_}}}, {"finish_reason", "stop"}}}}};
-      res.set_content(reply.dump(), "application/json");
-    });
-    port_ = server_.bind_to_any_port("127.0.0.1");
-    thread_ = std::thread([this] { server_.listen_after_bind(); });
-    watchdog_ = std::thread([this] {
-      const auto until = std::chrono::steady_clock::now() + kLifetime;
-      while (!done_ && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      server_.stop();
-    });
-    // The socket listens from bind_to_any_port on: early requests wait in its backlog.
+    listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    addr.sin_port = 0;
+    if (listen_fd_ < 0 || ::bind(listen_fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) != 0 ||
+        ::listen(listen_fd_, 8) != 0) {
+      throw std::runtime_error("test server: cannot listen on 127.0.0.1");
+    }
+    socklen_t len = sizeof(addr);
+    ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+    port_ = ntohs(addr.sin_port);
+    thread_ = std::thread([this] { Serve(); });
   }
   ~FakeChatServer() {
     done_ = true;
-    watchdog_.join();
     thread_.join();
+    ::close(listen_fd_);
   }
   std::string url() const { return "http://127.0.0.1:" + std::to_string(port_); }
-  const std::string& last_request() const { return last_request_; }
+  std::string last_request() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return last_request_;
+  }
+  std::string last_path() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return last_path_;
+  }
   int requests() const { return requests_; }
 
  private:
   static constexpr std::chrono::seconds kLifetime{60};
-  httplib::Server server_;
+
+  void Serve() {
+    const auto until = std::chrono::steady_clock::now() + kLifetime;
+    while (!done_ && std::chrono::steady_clock::now() < until) {
+      pollfd p{listen_fd_, POLLIN, 0};
+      if (::poll(&p, 1, 20) != 1) continue;
+      const int fd = ::accept(listen_fd_, nullptr, nullptr);
+      if (fd < 0) continue;
+      Handle(fd);
+      ::close(fd);
+    }
+  }
+
+  void Handle(int fd) {
+    std::string in;
+    char buf[4096];
+    size_t head_end = std::string::npos, need = 0;
+    while (true) {
+      pollfd p{fd, POLLIN, 0};
+      if (::poll(&p, 1, 2000) != 1) return;
+      const ssize_t n = ::recv(fd, buf, sizeof(buf), 0);
+      if (n <= 0) return;
+      in.append(buf, static_cast<size_t>(n));
+      if (head_end == std::string::npos && (head_end = in.find("\r\n\r\n")) != std::string::npos) {
+        const size_t cl = in.find("Content-Length: ");
+        need = cl < head_end ? std::stoul(in.substr(cl + 16)) : 0;
+      }
+      if (head_end != std::string::npos && in.size() >= head_end + 4 + need) break;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      last_path_ = in.substr(5, in.find(' ', 5) - 5);
+      last_request_ = in.substr(head_end + 4, need);
+    }
+    ++requests_;
+    std::string body;
+    if (status_ == 200) {
+      const nlohmann::json reply = {
+          {"id", "chatcmpl-test"},
+          {"object", "chat.completion"},
+          {"choices",
+           {{{"index", 0}, {"message", {{"role", "assistant"}, {"content", content_}}}, {"finish_reason", "stop"}}}}};
+      body = reply.dump();
+    } else {
+      body = "model not loaded";
+    }
+    const std::string out = "HTTP/1.1 " + std::to_string(status_) + " X\r\nContent-Type: application/json\r\n" +
+                            "Content-Length: " + std::to_string(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
+    ::send(fd, out.data(), out.size(), MSG_NOSIGNAL);
+  }
+
   std::string content_;
   int status_;
+  int listen_fd_ = -1;
   int port_ = 0;
-  std::string last_request_;
+  mutable std::mutex mutex_;
+  std::string last_request_, last_path_;
   std::atomic<int> requests_{0};
   std::atomic<bool> done_{false};
-  std::thread thread_, watchdog_;
+  std::thread thread_;
 };
 
 const char* kNarrative =
@@ -78,6 +135,7 @@ TEST(LlmExtractorTest, SpeaksTheChatProtocolAndMergesFieldByField) {
   config.timeout_s = 10;
   const AccidentRecord r = LlmExtractor(config).Extract(kNarrative);
   EXPECT_EQ(server.requests(), 1);
+  EXPECT_EQ(server.last_path(), "/v1/chat/completions");
   const nlohmann::json request = nlohmann::json::parse(server.last_request());
   EXPECT_EQ(request["model"], "test-model");
   EXPECT_EQ(request["temperature"], 0);
