@@ -4,7 +4,6 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <map>
 #include <regex>
@@ -626,12 +625,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
   }
 
-#ifdef ACCSIM_EXTRACT_DEBUG
-  for (const auto& seg : segments) {
-    std::fprintf(stderr, "[v%d s%zu k%d] %s\n", seg.vehicle, seg.sentence, static_cast<int>(sentences[seg.sentence].kind),
-                 seg.text.c_str());
-  }
-#endif
   // ---- Directions, lanes, speeds, movements per vehicle.
   static const regex kLaneNo(
       R"(\b(?:in|within|using|from|occupying)\s+(?:the\s+)?(?:lane\s+([1-9])\b|([1-9])(?:st|nd|rd|th)\s+(?:\w+\s+){0,2}?lane))");
