@@ -61,6 +61,47 @@ def vector_accsim(n, threads, seconds):
     return measure(step, lambda: vec.reset(seed=0), seconds, batch=n)
 
 
+def breakdown(n=128):
+    """Where a batched policy step's time goes (one thread, microseconds per
+    environment step): physics and the rest of CrashEnv.Step, episode
+    resets spread over the steps of an episode, and Python/binding overhead."""
+    lc = [p for p in accsim.bundled_scenarios() if "lane_changing" in p]
+    acts = np.random.default_rng(0).uniform(-0.3, 0.3, (64, n, 2)).astype(np.float32)
+    vec = accsim.make_vec(n, scenario=lc, num_threads=1)
+    core = vec.unwrapped._vec
+    core.reset(0)
+    t0 = time.perf_counter()
+    resets = 20
+    for k in range(resets):
+        core.reset(k * n)
+    reset_us = (time.perf_counter() - t0) / (resets * n) * 1e6
+    # Steps without episode ends: an episode long enough not to end in the window.
+    long = accsim.make_vec(n, scenario=lc, num_threads=1,
+                           config={"terminate_on_collision": False, "time_limit": 60.0}).unwrapped._vec
+    long.reset(0)
+    steps = 30
+    t0 = time.perf_counter()
+    for k in range(steps):
+        long.step(acts[k % 64])
+    step_us = (time.perf_counter() - t0) / (steps * n) * 1e6
+    # The benchmark's own mix (episodes end and reset), through the raw core
+    # binding and through the Gymnasium wrapper, from the same seeds.
+    steps = 200
+    core.reset(0)
+    episodes, t0 = 0, time.perf_counter()
+    for k in range(steps):
+        core.step(acts[k % 64])
+        episodes += int((core.terminated | core.truncated).sum())
+    core_us = (time.perf_counter() - t0) / (steps * n) * 1e6
+    vec.reset(seed=0)
+    t0 = time.perf_counter()
+    for k in range(steps):
+        vec.step(acts[k % 64])
+    wrapped_us = (time.perf_counter() - t0) / (steps * n) * 1e6
+    return {"reset_us": reset_us, "step_no_end_us": step_us, "core_mixed_us": core_us,
+            "python_overhead_us": max(0.0, wrapped_us - core_us), "mean_episode_steps": steps * n / max(1, episodes)}
+
+
 def highway(env_id, seconds):
     try:
         import gymnasium
@@ -86,25 +127,39 @@ def main():
     p.add_argument("--json", action="store_true")
     args = p.parse_args()
     os.environ.setdefault("OMP_NUM_THREADS", "1")
+    load_at_start = os.getloadavg()[0]
     rows = {"single_env": single_accsim(args.seconds)}
     for n in (1, 8, 32, 128):
         for t in (1, 2):
             rows[f"vector_n{n}_t{t}"] = vector_accsim(n, t, args.seconds)
+    parts = breakdown()
     hw = {}
     for env_id in ("intersection-v0", "highway-fast-v0"):
         sps, why = highway(env_id, args.seconds)
         hw[env_id] = sps if sps is not None else why
-    result = {"machine": {"cpu": platform.processor() or platform.machine(), "cores": os.cpu_count()},
-              "accsim_steps_per_second": rows, "highway_env_steps_per_second": hw}
+    result = {"machine": {"cpu": platform.processor() or platform.machine(), "cores": os.cpu_count(),
+                          "load_average_at_start": load_at_start},
+              "accsim_steps_per_second": rows, "highway_env_steps_per_second": hw,
+              "breakdown_us_per_env_step": parts}
     if args.json:
         print(json.dumps(result, indent=2))
         return
     best = max(rows.values())
-    print(f"Python throughput, 4-vehicle lane-changing scenario, {os.cpu_count()} cores")
+    load = load_at_start
+    print(f"Python throughput, 4-vehicle lane-changing scenario, {os.cpu_count()} cores "
+          f"(load average {load:.1f} at the start: other work on the machine lowers the 2-thread figures)")
     print(f"  {'accsim single env (Python loop)':<40} {rows['single_env']:>10.0f} steps/s")
     for n in (1, 8, 32, 128):
         print(f"  {'accsim VectorEnv N=' + str(n):<26} 1 thread {rows[f'vector_n{n}_t1']:>10.0f}   "
               f"2 threads {rows[f'vector_n{n}_t2']:>10.0f} steps/s")
+    print("  where a batched step's time goes (N=128, 1 thread, per environment step):")
+    print(f"    CrashEnv.Step (physics, NPCs, reward, observation)  {parts['step_no_end_us']:6.1f} us")
+    print(f"    episode reset {parts['reset_us']:.0f} us / {parts['mean_episode_steps']:.0f} steps per episode"
+          f"            {parts['reset_us'] / parts['mean_episode_steps']:6.1f} us")
+    print(f"    core total as benchmarked                          {parts['core_mixed_us']:6.1f} us")
+    overhead = parts["python_overhead_us"]
+    print(f"    Python wrapper and bindings                        "
+          f"{'  <0.1' if overhead < 0.1 else f'{overhead:6.1f}'} us")
     for env_id, v in hw.items():
         if isinstance(v, float):
             print(f"  {'highway-env ' + env_id:<40} {v:>10.1f} steps/s   accsim best / this = {best / v:,.0f}x")
