@@ -9,12 +9,15 @@ import accsim
 
 
 def registered_ids():
-    return [k for k in gymnasium.registry if k.startswith("accsim/")]
+    ids = [k for k in gymnasium.registry if k.startswith("accsim/")]
+    assert ids, "accsim registered no environments"
+    return ids
 
 
+@pytest.mark.parametrize("render_mode", [None, "rgb_array"])
 @pytest.mark.parametrize("env_id", registered_ids())
-def test_check_env_passes_without_warnings(env_id):
-    env = gymnasium.make(env_id, render_mode="rgb_array").unwrapped
+def test_check_env_passes_without_warnings(env_id, render_mode):
+    env = gymnasium.make(env_id, render_mode=render_mode).unwrapped
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         check_env(env)

@@ -1,4 +1,5 @@
 import gc
+import weakref
 
 import gymnasium
 import numpy as np
@@ -58,9 +59,16 @@ def test_observations_are_a_zero_copy_view_that_keeps_its_owner_alive():
     obs2, *_ = vec.step(np.zeros((4, 2), np.float32))
     assert np.shares_memory(obs, obs2)  # the same buffer, updated in place
     assert not np.array_equal(before, obs)
-    del vec, obs2
+    owner = obs.base
+    while isinstance(owner, np.ndarray):
+        owner = owner.base
+    alive = weakref.ref(owner)
+    del vec, obs2, owner
     gc.collect()
-    assert np.isfinite(obs).all()  # the buffer's owner is still alive
+    assert alive() is not None and np.isfinite(obs).all()  # the view keeps the C++ owner alive
+    del obs
+    gc.collect()
+    assert alive() is None  # ... and only the views did
 
 
 @pytest.mark.parametrize("bad, match", [
