@@ -45,7 +45,8 @@ def main() -> int:
     obs, _ = single.reset(seed=args.seed)
     action, _ = reloaded.predict(obs, deterministic=True)
     assert action.shape == (2,) and np.isfinite(action).all()
-    print(f"saved {args.out}; reloaded model predicts {np.round(action, 3).tolist()} for the first observation")
+    shown = ", ".join(f"{x:+.3f}" for x in action)
+    print(f"saved {args.out}; reloaded model predicts [{shown}] for the first observation")
     return 0
 
 
