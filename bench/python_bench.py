@@ -50,12 +50,13 @@ def single_accsim(seconds):
 def vector_accsim(n, threads, seconds):
     vec = accsim.make_vec(n, scenario=[p for p in accsim.bundled_scenarios() if "lane_changing" in p],
                           num_threads=threads)
-    # The same kind of actions as the single-env run: gentle and varying.
-    acts = np.random.default_rng(0).uniform(-0.3, 0.3, (64, n, 2)).astype(np.float32)
+    # The single-env run's action stream (for N = 1 exactly the same actions,
+    # so the same episodes and resets): gentle and varying.
+    acts = np.random.default_rng(0).uniform(-0.3, 0.3, (1000, n, 2)).astype(np.float32)
     state = {"t": 0}
 
     def step():
-        vec.step(acts[state["t"] % 64])
+        vec.step(acts[state["t"] % 1000])
         state["t"] += 1
 
     return measure(step, lambda: vec.reset(seed=0), seconds, batch=n)
