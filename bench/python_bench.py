@@ -20,16 +20,24 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python"))
 import accsim  # noqa: E402
 
 
-def measure(step, reset, seconds, batch=1):
+def measure(step, reset, seconds, batch=1, windows=5, calls_per_check=None):
+    """Best rate over `windows` consecutive windows of seconds / windows:
+    other work on a shared machine only ever slows a window down, so the
+    best one is the closest to what the code itself costs."""
     reset()
-    steps, start = 0, time.perf_counter()
-    while True:
-        for _ in range(50):
-            step()
-        steps += 50 * batch
-        elapsed = time.perf_counter() - start
-        if elapsed >= seconds:
-            return steps / elapsed
+    calls_per_check = calls_per_check or max(1, 400 // batch)
+    best = 0.0
+    for _ in range(windows):
+        steps, start = 0, time.perf_counter()
+        while True:
+            for _ in range(calls_per_check):
+                step()
+            steps += calls_per_check * batch
+            elapsed = time.perf_counter() - start
+            if elapsed >= seconds / windows:
+                break
+        best = max(best, steps / elapsed)
+    return best
 
 
 def single_accsim(seconds):
@@ -118,8 +126,8 @@ def highway(env_id, seconds):
         if term or trunc:
             env.reset()
 
-    # highway-env is slow; a shorter window is enough for its figure.
-    return measure(step, lambda: env.reset(seed=0), min(seconds, 3.0)), None
+    # highway-env is slow (tens of steps/s): fewer, longer windows.
+    return measure(step, lambda: env.reset(seed=0), 3.0, windows=3, calls_per_check=2), None
 
 
 def main():
