@@ -38,7 +38,7 @@ VectorEnv::VectorEnv(int num_envs, const CrashEnvConfig& config,
   errors_.assign(n, nullptr);
   const int hw = std::max(1u, std::thread::hardware_concurrency());
   num_threads_ = std::min(num_envs, num_threads == 0 ? hw : num_threads);
-  for (int w = 1; w < num_threads_; ++w) workers_.emplace_back([this, w] { WorkerLoop(w); });
+  for (int w = 1; w < num_threads_; ++w) workers_.emplace_back([this] { WorkerLoop(); });
 }
 
 VectorEnv::~VectorEnv() {
@@ -50,52 +50,62 @@ VectorEnv::~VectorEnv() {
   for (auto& t : workers_) t.join();
 }
 
-// Worker `worker` always takes indices worker, worker + T, ... so which
-// thread runs an environment is fixed; an exception stays with its index
-// (a throw escaping a pool thread would terminate the process).
-void VectorEnv::RunShare(int worker) {
-  const std::function<void(int)>& job = *job_;
-  for (int i = worker; i < num_envs(); i += num_threads_) {
+// Claims indices of `generation` one at a time until none is left. A claim
+// succeeds only while the caller is still waiting for that index, so `job`
+// is alive whenever it is called. An exception stays with its index (one
+// escaping a pool thread would terminate the process).
+void VectorEnv::RunClaims(uint32_t generation, const std::function<void(int)>* job) {
+  const uint64_t n = envs_.size();
+  uint64_t v = next_.load(std::memory_order_acquire);
+  for (;;) {
+    if ((v >> 32) != generation || (v & 0xffffffffu) >= n) return;
+    if (!next_.compare_exchange_weak(v, v + 1, std::memory_order_acq_rel, std::memory_order_acquire)) continue;
+    const int i = static_cast<int>(v & 0xffffffffu);
     try {
-      job(i);
+      (*job)(i);
     } catch (...) {
       errors_[static_cast<size_t>(i)] = std::current_exception();
     }
+    if (done_.fetch_add(1, std::memory_order_acq_rel) + 1 == static_cast<int>(n)) {
+      std::lock_guard<std::mutex> lock(mu_);  // pairs with the caller's predicate check
+      done_cv_.notify_one();
+    }
+    v = next_.load(std::memory_order_acquire);
   }
 }
 
-void VectorEnv::WorkerLoop(int worker) {
-  long seen = 0;
+void VectorEnv::WorkerLoop() {
+  uint32_t seen = 0;
   for (;;) {
+    const std::function<void(int)>* job = nullptr;
     {
       std::unique_lock<std::mutex> lock(mu_);
       start_cv_.wait(lock, [&] { return stop_ || generation_ != seen; });
       if (stop_) return;
       seen = generation_;
+      job = job_;
     }
-    RunShare(worker);
-    {
-      std::lock_guard<std::mutex> lock(mu_);
-      if (--pending_ == 0) done_cv_.notify_one();
-    }
+    RunClaims(seen, job);
   }
 }
 
 void VectorEnv::ParallelFor(const std::function<void(int)>& fn) {
   std::fill(errors_.begin(), errors_.end(), nullptr);
+  done_.store(0, std::memory_order_relaxed);
+  uint32_t generation = 0;
   {
     std::lock_guard<std::mutex> lock(mu_);
+    generation = ++generation_;
     job_ = &fn;
-    pending_ = num_threads_ - 1;
-    ++generation_;
+    next_.store(static_cast<uint64_t>(generation) << 32, std::memory_order_release);
   }
   if (num_threads_ > 1) start_cv_.notify_all();
-  RunShare(0);  // the calling thread is worker 0
+  RunClaims(generation, &fn);  // the calling thread works too
   {
     std::unique_lock<std::mutex> lock(mu_);
-    done_cv_.wait(lock, [&] { return pending_ == 0; });
-    job_ = nullptr;
+    done_cv_.wait(lock, [&] { return done_.load(std::memory_order_acquire) == num_envs(); });
   }
+  // Lowest index first, so which error is reported does not depend on timing.
   for (const auto& e : errors_) {
     if (e) std::rethrow_exception(e);
   }

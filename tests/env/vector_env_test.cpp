@@ -51,6 +51,17 @@ TEST(VectorEnvTest, ThreadCountDoesNotChangeResults) {
   EXPECT_EQ(a, RunVector(three, 200));
 }
 
+// More threads than cores, and episodes (1 s) ending all the time: workers
+// wake late, find nothing left, or take over each other's share.
+TEST(VectorEnvTest, OversubscribedPoolWithFrequentResetsStaysDeterministic) {
+  CrashEnvConfig c;
+  c.time_limit = 1.0;
+  c.npc_time_jitter = 0.3;
+  VectorEnv one(6, c, Examples(), 1), six(6, c, Examples(), 6);
+  EXPECT_EQ(six.num_threads(), 6);
+  EXPECT_EQ(RunVector(one, 300), RunVector(six, 300));
+}
+
 TEST(VectorEnvTest, MatchesSingleEnvironmentsWithTheSameSeeds) {
   VectorEnv v(3, CrashEnvConfig{}, Examples(), 2);
   std::vector<std::unique_ptr<CrashEnv>> singles;

@@ -11,8 +11,10 @@
 //    convention).
 // Determinism: each environment's results depend only on its own seed
 // (Reset(seed) gives environment i the seed `seed + i`), never on the
-// number of threads or on scheduling: the split of indices over threads is
-// a fixed stride, and every environment writes only its own rows.
+// number of threads or on scheduling: threads claim environments one at a
+// time (so an episode reset, ~50x a step, or a descheduled thread does not
+// leave the other thread idle), and whichever thread runs environment i
+// computes the same thing from i's own state into i's own rows.
 // Errors: an exception thrown while stepping or resetting environment i is
 // caught on its thread and rethrown from Step()/Reset() on the caller's
 // thread (the lowest failing index, so the error does not depend on timing).
@@ -22,6 +24,7 @@
 // overwritten by every Reset()/Step().
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -78,8 +81,8 @@ class VectorEnv {
 
  private:
   void ParallelFor(const std::function<void(int)>& fn);
-  void RunShare(int worker);
-  void WorkerLoop(int worker);
+  void RunClaims(uint32_t generation, const std::function<void(int)>* job);
+  void WorkerLoop();
   void StepOne(int i, const float* action);
   void RecordReset(int i);
 
@@ -95,15 +98,19 @@ class VectorEnv {
   bool was_reset_ = false;
   std::mutex call_mu_;  // held by Reset()/Step(); overlapping calls are refused
 
-  // Thread pool: workers wait for a new generation, run their share of
-  // indices (a fixed stride, so the split is deterministic), then report.
+  // Thread pool: a new generation wakes the workers; the caller and the
+  // workers then claim indices from next_ until all are taken, and the
+  // caller waits until done_ counts all of them. next_ carries the
+  // generation in its high 32 bits, so a worker that wakes late can never
+  // claim an index (or touch the job) of a generation it did not read.
   std::vector<std::thread> workers_;
   std::mutex mu_;
   std::condition_variable start_cv_, done_cv_;
-  const std::function<void(int)>* job_ = nullptr;
-  long generation_ = 0;
-  int pending_ = 0;
-  bool stop_ = false;
+  const std::function<void(int)>* job_ = nullptr;  // guarded by mu_
+  uint32_t generation_ = 0;                         // guarded by mu_
+  bool stop_ = false;                               // guarded by mu_
+  std::atomic<uint64_t> next_{0};  // generation << 32 | next unclaimed index
+  std::atomic<int> done_{0};       // indices finished in this generation
 };
 
 }  // namespace accsim
