@@ -16,6 +16,7 @@ import torch
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from stable_baselines3 import SAC  # noqa: E402
+from stable_baselines3.common.logger import Logger  # noqa: E402
 
 import accsim  # noqa: E402
 from accsim.sb3 import CrashSB3VecEnv  # noqa: E402
@@ -36,6 +37,9 @@ def main() -> int:
     env = CrashSB3VecEnv(args.envs, suite=args.suite, seed=args.seed)
     model = SAC("MlpPolicy", env, seed=args.seed, learning_starts=min(1000, args.steps // 2),
                 batch_size=256, train_freq=1, gradient_steps=1, verbose=0)
+    # SB3's default logger makes a dated folder in /tmp on every run even when
+    # it writes nothing there; this one records without writing anywhere.
+    model.set_logger(Logger(folder=None, output_formats=[]))
     model.learn(total_timesteps=args.steps, progress_bar=False)
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     model.save(args.out)
