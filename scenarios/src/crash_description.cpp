@@ -1,0 +1,355 @@
+#include "accsim/scenarios/crash_description.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+namespace accsim {
+namespace {
+
+constexpr std::array<std::pair<Manoeuvre, std::string_view>, 11> kManoeuvres{{
+    {Manoeuvre::kStraight, "straight"},
+    {Manoeuvre::kTurnLeft, "turn_left"},
+    {Manoeuvre::kTurnRight, "turn_right"},
+    {Manoeuvre::kLaneChangeLeft, "lane_change_left"},
+    {Manoeuvre::kLaneChangeRight, "lane_change_right"},
+    {Manoeuvre::kStopped, "stopped"},
+    {Manoeuvre::kSlowing, "slowing"},
+    {Manoeuvre::kBacking, "backing"},
+    {Manoeuvre::kPassing, "passing"},
+    {Manoeuvre::kMerging, "merging"},
+    {Manoeuvre::kUnknown, "unknown"},
+}};
+constexpr std::array<std::pair<ImpactArea, std::string_view>, 9> kAreas{{
+    {ImpactArea::kFront, "front"},
+    {ImpactArea::kRear, "rear"},
+    {ImpactArea::kLeft, "left"},
+    {ImpactArea::kRight, "right"},
+    {ImpactArea::kFrontLeft, "front_left"},
+    {ImpactArea::kFrontRight, "front_right"},
+    {ImpactArea::kRearLeft, "rear_left"},
+    {ImpactArea::kRearRight, "rear_right"},
+    {ImpactArea::kUnknown, "unknown"},
+}};
+
+template <typename E, size_t N>
+E Parse(const std::array<std::pair<E, std::string_view>, N>& table, std::string_view s, const char* what) {
+  std::string names;
+  for (const auto& [e, name] : table) {
+    if (name == s) return e;
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  throw std::invalid_argument(std::string(what) + ": unknown value '" + std::string(s) + "' (expected one of " +
+                              names + ")");
+}
+
+Provenance ProvenanceFromString(std::string_view s, const std::string& path) {
+  for (const Provenance p : {Provenance::kStated, Provenance::kInferred, Provenance::kDefaulted}) {
+    if (ToString(p) == s) return p;
+  }
+  throw std::invalid_argument(path + ".source: unknown value '" + std::string(s) +
+                              "' (expected stated, inferred or defaulted)");
+}
+
+bool Opposite(Compass a, Compass b) { return (static_cast<int>(a) + 2) % 4 == static_cast<int>(b); }
+bool Crossing(Compass a, Compass b) { return (static_cast<int>(a) + static_cast<int>(b)) % 2 == 1; }
+
+template <typename T, typename F>
+nlohmann::json J(const Field<T>& f, F&& conv) {
+  return {{"value", conv(f.value)}, {"source", std::string(ToString(f.source))}};
+}
+template <typename T>
+nlohmann::json J(const Field<T>& f) {
+  return J(f, [](const T& v) { return v; });
+}
+
+// Reads {"value": ..., "source": ...}; a missing field keeps its default.
+template <typename T, typename F>
+void Read(const nlohmann::json& j, const char* key, const std::string& path, Field<T>& f, F&& conv) {
+  if (!j.contains(key)) return;
+  const std::string p = path + key;
+  const auto& o = j.at(key);
+  if (!o.is_object() || !o.contains("value")) throw std::invalid_argument(p + ": expected {\"value\", \"source\"}");
+  try {
+    f.value = conv(o.at("value"));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(p + ".value: " + e.what());
+  }
+  f.source = o.contains("source") ? ProvenanceFromString(o.at("source").get<std::string>(), p) : Provenance::kStated;
+}
+template <typename T>
+void Read(const nlohmann::json& j, const char* key, const std::string& path, Field<T>& f) {
+  Read(j, key, path, f, [](const nlohmann::json& v) { return v.get<T>(); });
+}
+
+}  // namespace
+
+std::string_view ToString(Manoeuvre m) {
+  for (const auto& [e, name] : kManoeuvres) {
+    if (e == m) return name;
+  }
+  return "unknown";
+}
+std::string_view ToString(ImpactArea a) {
+  for (const auto& [e, name] : kAreas) {
+    if (e == a) return name;
+  }
+  return "unknown";
+}
+Manoeuvre ManoeuvreFromString(std::string_view s) { return Parse(kManoeuvres, s, "movement"); }
+ImpactArea ImpactAreaFromString(std::string_view s) { return Parse(kAreas, s, "impact_area"); }
+
+bool AreaIncludes(ImpactArea area, ImpactArea face) {
+  if (area == ImpactArea::kUnknown || area == face) return true;
+  switch (area) {
+    case ImpactArea::kFrontLeft: return face == ImpactArea::kFront || face == ImpactArea::kLeft;
+    case ImpactArea::kFrontRight: return face == ImpactArea::kFront || face == ImpactArea::kRight;
+    case ImpactArea::kRearLeft: return face == ImpactArea::kRear || face == ImpactArea::kLeft;
+    case ImpactArea::kRearRight: return face == ImpactArea::kRear || face == ImpactArea::kRight;
+    default: return false;
+  }
+}
+
+ImpactArea ImpactAreaFrom(DamageArea plane, std::string_view detail) {
+  const bool front = detail.find("front") != std::string_view::npos;
+  const bool rear = detail.find("rear") != std::string_view::npos || detail.find("back") != std::string_view::npos;
+  const bool left = detail.find("left") != std::string_view::npos;
+  const bool right = detail.find("right") != std::string_view::npos;
+  if (front && left) return ImpactArea::kFrontLeft;
+  if (front && right) return ImpactArea::kFrontRight;
+  if (rear && left) return ImpactArea::kRearLeft;
+  if (rear && right) return ImpactArea::kRearRight;
+  switch (plane) {
+    case DamageArea::kFront: return ImpactArea::kFront;
+    case DamageArea::kRear: return ImpactArea::kRear;
+    case DamageArea::kLeft: return ImpactArea::kLeft;
+    case DamageArea::kRight: return ImpactArea::kRight;
+    case DamageArea::kUnknown: break;
+  }
+  return ImpactArea::kUnknown;
+}
+
+int CrashDescription::IndexOf(const std::string& id) const {
+  for (size_t i = 0; i < vehicles.size(); ++i) {
+    if (vehicles[i].id == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void Validate(const CrashDescription& d) {
+  if (d.vehicles.empty()) throw std::invalid_argument("vehicles: the description names no vehicle");
+  const RoadDescription& r = d.road;
+  if (r.lanes_per_direction.value < 1 || r.lanes_per_direction.value > 4) {
+    throw std::invalid_argument("road.lanes_per_direction: must be in [1, 4], got " +
+                                std::to_string(r.lanes_per_direction.value));
+  }
+  if (!std::isfinite(r.speed_limit.value) || r.speed_limit.value <= 0.0 || r.speed_limit.value > 50.0) {
+    throw std::invalid_argument("road.speed_limit: must be in (0, 50] m/s, got " + std::to_string(r.speed_limit.value));
+  }
+  std::set<std::string> ids;
+  for (size_t i = 0; i < d.vehicles.size(); ++i) {
+    const VehicleDescription& v = d.vehicles[i];
+    const std::string path = "vehicles[" + std::to_string(i) + "]";
+    if (v.id.empty()) throw std::invalid_argument(path + ".id: empty");
+    if (!ids.insert(v.id).second) throw std::invalid_argument(path + ".id: '" + v.id + "' appears twice");
+    if (v.speed.value) {
+      const double s = *v.speed.value;
+      if (!std::isfinite(s) || s < 0.0) throw std::invalid_argument(path + ".speed: must be a finite value >= 0");
+      if (s > 70.0) {
+        throw std::invalid_argument(path + ".speed: " + std::to_string(s) +
+                                    " m/s is impossible for a road vehicle (at most 70 m/s)");
+      }
+      if (v.movement.value == Manoeuvre::kStopped && v.movement.known() && v.speed.known() && s > 1.0) {
+        throw std::invalid_argument(path + ".speed: " + std::to_string(s) + " m/s contradicts movement stopped");
+      }
+    }
+    if (v.lane.value && (*v.lane.value < 0 || *v.lane.value >= r.lanes_per_direction.value)) {
+      throw std::invalid_argument(path + ".lane: " + std::to_string(*v.lane.value) + " is not a lane of a road with " +
+                                  std::to_string(r.lanes_per_direction.value) + " lane(s) per direction");
+    }
+  }
+  const int a = d.striker.known() ? d.IndexOf(d.striker.value) : -1;
+  const int b = d.struck.known() ? d.IndexOf(d.struck.value) : -1;
+  if (d.striker.known() && a < 0) throw std::invalid_argument("striker: no vehicle '" + d.striker.value + "'");
+  if (d.struck.known() && b < 0 && d.struck.value != "object") {
+    throw std::invalid_argument("struck: no vehicle '" + d.struck.value + "'");
+  }
+  if (a >= 0 && a == b) throw std::invalid_argument("struck: the same vehicle as the striker (" + d.striker.value + ")");
+  // Stated directions must fit the crash type.
+  if (a >= 0 && b >= 0 && d.type.known()) {
+    const auto& ta = d.vehicles[static_cast<size_t>(a)].travel;
+    const auto& tb = d.vehicles[static_cast<size_t>(b)].travel;
+    if (ta.known() && tb.known() && ta.value && tb.value) {
+      const Compass ca = *ta.value, cb = *tb.value;
+      const CrashType t = d.type.value;
+      std::string expected;
+      if ((t == CrashType::kRearEnd || t == CrashType::kSideswipeSame) && ca != cb) expected = "the same direction";
+      if ((t == CrashType::kHeadOn || t == CrashType::kSideswipeOpposite) && !Opposite(ca, cb)) {
+        expected = "the opposite direction";
+      }
+      if (t == CrashType::kAngle && !Crossing(ca, cb)) expected = "a crossing direction";
+      if (!expected.empty()) {
+        throw std::invalid_argument("vehicles[" + std::to_string(b) + "].travel: " + std::string(ToString(cb)) +
+                                    " contradicts crash type " + std::string(ToString(t)) + " (expected " + expected +
+                                    " to " + d.vehicles[static_cast<size_t>(a)].id + "'s " +
+                                    std::string(ToString(ca)) + ")");
+      }
+    }
+  }
+}
+
+nlohmann::json ToJson(const CrashDescription& d) {
+  nlohmann::json vs = nlohmann::json::array();
+  for (const auto& v : d.vehicles) {
+    vs.push_back({
+        {"id", v.id},
+        {"class", J(v.vehicle_class, [](VehicleClass c) { return std::string(ToString(c)); })},
+        {"travel", J(v.travel,
+                     [](const std::optional<Compass>& c) {
+                       return c ? nlohmann::json(std::string(ToString(*c))) : nlohmann::json("unknown");
+                     })},
+        {"movement", J(v.movement, [](Manoeuvre m) { return std::string(ToString(m)); })},
+        {"speed", J(v.speed, [](const std::optional<double>& s) { return s ? nlohmann::json(*s) : nlohmann::json(); })},
+        {"lane", J(v.lane, [](const std::optional<int>& l) { return l ? nlohmann::json(*l) : nlohmann::json(); })},
+        {"impact_area", J(v.impact_area, [](ImpactArea a) { return std::string(ToString(a)); })},
+        {"parked", v.parked},
+    });
+  }
+  return {
+      {"source_id", d.source_id},
+      {"road",
+       {{"type", J(d.road.type, [](RoadType t) { return std::string(ToString(t)); })},
+        {"lanes_per_direction", J(d.road.lanes_per_direction)},
+        {"divided", J(d.road.divided)},
+        {"speed_limit", J(d.road.speed_limit)},
+        {"surface", J(d.road.surface, [](Surface s) { return std::string(ToString(s)); })},
+        {"layout_note", d.road.layout_note}}},
+      {"vehicles", vs},
+      {"type", J(d.type, [](CrashType t) { return std::string(ToString(t)); })},
+      {"location", J(d.location, [](CrashLocation l) { return std::string(ToString(l)); })},
+      {"striker", J(d.striker)},
+      {"struck", J(d.struck)},
+      {"notes", d.notes},
+  };
+}
+
+CrashDescription CrashDescriptionFromJson(const nlohmann::json& j) {
+  if (!j.is_object()) throw std::invalid_argument("crash description: expected a JSON object");
+  CrashDescription d;
+  const auto str = [](const nlohmann::json& v) { return v.get<std::string>(); };
+  if (j.contains("source_id")) d.source_id = j.at("source_id").get<std::string>();
+  if (j.contains("road")) {
+    const auto& r = j.at("road");
+    Read(r, "type", "road.", d.road.type, [&](const nlohmann::json& v) { return RoadTypeFromString(str(v)); });
+    Read(r, "lanes_per_direction", "road.", d.road.lanes_per_direction);
+    Read(r, "divided", "road.", d.road.divided);
+    Read(r, "speed_limit", "road.", d.road.speed_limit);
+    Read(r, "surface", "road.", d.road.surface, [&](const nlohmann::json& v) { return SurfaceFromString(str(v)); });
+    if (r.contains("layout_note")) d.road.layout_note = r.at("layout_note").get<std::string>();
+  }
+  if (j.contains("vehicles")) {
+    if (!j.at("vehicles").is_array()) throw std::invalid_argument("vehicles: expected an array");
+    for (size_t i = 0; i < j.at("vehicles").size(); ++i) {
+      const auto& o = j.at("vehicles")[i];
+      const std::string path = "vehicles[" + std::to_string(i) + "].";
+      VehicleDescription v;
+      v.id = o.contains("id") ? o.at("id").get<std::string>() : "V" + std::to_string(i + 1);
+      Read(o, "class", path, v.vehicle_class, [&](const nlohmann::json& x) { return VehicleClassFromString(str(x)); });
+      Read(o, "travel", path, v.travel, [&](const nlohmann::json& x) -> std::optional<Compass> {
+        if (x.is_null() || str(x) == "unknown") return std::nullopt;
+        return CompassFromString(str(x));
+      });
+      Read(o, "movement", path, v.movement, [&](const nlohmann::json& x) { return ManoeuvreFromString(str(x)); });
+      Read(o, "speed", path, v.speed, [](const nlohmann::json& x) -> std::optional<double> {
+        if (x.is_null()) return std::nullopt;
+        return x.get<double>();
+      });
+      Read(o, "lane", path, v.lane, [](const nlohmann::json& x) -> std::optional<int> {
+        if (x.is_null()) return std::nullopt;
+        return x.get<int>();
+      });
+      Read(o, "impact_area", path, v.impact_area, [&](const nlohmann::json& x) { return ImpactAreaFromString(str(x)); });
+      if (o.contains("parked")) v.parked = o.at("parked").get<bool>();
+      d.vehicles.push_back(std::move(v));
+    }
+  }
+  Read(j, "type", "", d.type, [&](const nlohmann::json& v) { return CrashTypeFromString(str(v)); });
+  Read(j, "location", "", d.location, [&](const nlohmann::json& v) { return CrashLocationFromString(str(v)); });
+  Read(j, "striker", "", d.striker);
+  Read(j, "struck", "", d.struck);
+  if (j.contains("notes")) d.notes = j.at("notes").get<std::vector<std::string>>();
+  return d;
+}
+
+CrashDescription FromAccidentRecord(const AccidentRecord& r, std::optional<RoadType> road) {
+  if (r.vehicles.empty()) throw std::invalid_argument("vehicles: the record names no vehicle");
+  CrashDescription d;
+  const auto& k = r.road.kind;
+  switch (k.value) {
+    case RoadKind::kIntersection: d.road.type.Set(RoadType::kIntersection, k.source); break;
+    case RoadKind::kTJunction: d.road.type.Set(RoadType::kTJunction, k.source); break;
+    case RoadKind::kDriveway:
+      d.road.type.Set(RoadType::kTJunction, Provenance::kInferred);
+      d.road.layout_note = "driveway planned as a T-junction";
+      break;
+    case RoadKind::kCurve:
+    case RoadKind::kRamp:
+      d.road.type.Set(RoadType::kStraight, Provenance::kInferred);
+      d.road.layout_note = std::string(ToString(k.value)) + " planned as a straight road";
+      break;
+    case RoadKind::kStraight: d.road.type.Set(RoadType::kStraight, k.source); break;
+  }
+  if (road) d.road.type.Set(*road, Provenance::kStated);
+  d.road.lanes_per_direction.Set(std::clamp(r.road.lanes_per_direction.value, 1, 4), r.road.lanes_per_direction.source);
+  d.road.divided = r.road.divided;
+  d.road.speed_limit.Set(std::clamp(r.road.speed_limit_mps.value, 4.0, 40.0), r.road.speed_limit_mps.source);
+  d.road.surface = r.road.surface;
+  d.type = r.crash.type;
+  d.location = r.crash.location;
+  for (const auto& v : r.vehicles) {
+    VehicleDescription o;
+    o.id = v.id;
+    o.vehicle_class = v.vehicle_class;
+    o.travel = v.travel;
+    o.parked = v.parked.value;
+    Manoeuvre m = Manoeuvre::kStraight;
+    switch (v.movement.value) {
+      case Movement::kStraight: m = Manoeuvre::kStraight; break;
+      case Movement::kTurnLeft: m = Manoeuvre::kTurnLeft; break;
+      case Movement::kTurnRight: m = Manoeuvre::kTurnRight; break;
+      // The record does not keep the side; the planner takes it from the damage.
+      case Movement::kChangingLanes: m = Manoeuvre::kLaneChangeLeft; break;
+      case Movement::kStopped: m = Manoeuvre::kStopped; break;
+      case Movement::kSlowing: m = Manoeuvre::kSlowing; break;
+      case Movement::kBacking: m = Manoeuvre::kBacking; break;
+      case Movement::kPassing: m = Manoeuvre::kPassing; break;
+      case Movement::kMerging: m = Manoeuvre::kMerging; break;
+      case Movement::kUnknown: m = Manoeuvre::kUnknown; break;
+    }
+    o.movement.Set(m, v.movement.source);
+    if (v.speed_mps.known() && v.speed_mps.value > 0.0) o.speed.Set(v.speed_mps.value, v.speed_mps.source);
+    if (v.movement.value == Movement::kStopped && v.movement.known()) o.speed.Set(0.0, Provenance::kInferred);
+    const int lanes = d.road.lanes_per_direction.value;
+    // NASS numbers lanes from the kerb ("lane one" is the outside lane).
+    if (v.lane.known() && v.lane.value >= 1 && v.lane.value <= lanes) o.lane.Set(lanes - v.lane.value, Provenance::kInferred);
+    d.vehicles.push_back(std::move(o));
+  }
+  if (r.crash.striking.known() && d.IndexOf(r.crash.striking.value) >= 0) d.striker = r.crash.striking;
+  if (r.crash.struck.known() && d.IndexOf(r.crash.struck.value) >= 0) d.struck = r.crash.struck;
+  if (d.striker.known() && d.striker.value == d.struck.value) d.struck = {};
+  const auto area = [&](const Field<std::string>& who, const Field<DamageArea>& plane, const Field<std::string>& detail) {
+    if (!who.known()) return;
+    const int i = d.IndexOf(who.value);
+    if (i < 0 || !plane.known()) return;
+    d.vehicles[static_cast<size_t>(i)].impact_area.Set(ImpactAreaFrom(plane.value, detail.value), plane.source);
+  };
+  area(d.striker, r.crash.striking_area, r.crash.striking_detail);
+  area(d.struck, r.crash.struck_area, r.crash.struck_detail);
+  for (const auto& w : r.warnings) d.notes.push_back("extraction: " + w);
+  return d;
+}
+
+}  // namespace accsim

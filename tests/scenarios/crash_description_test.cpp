@@ -1,0 +1,127 @@
+#include "accsim/scenarios/crash_description.h"
+
+#include <gtest/gtest.h>
+
+namespace accsim {
+namespace {
+
+CrashDescription Pair(CrashType type) {
+  CrashDescription d;
+  d.type.Set(type, Provenance::kStated);
+  d.vehicles.resize(2);
+  d.vehicles[0].id = "V1";
+  d.vehicles[1].id = "V2";
+  d.striker.Set("V1", Provenance::kStated);
+  d.struck.Set("V2", Provenance::kStated);
+  return d;
+}
+
+std::string ErrorOf(const CrashDescription& d) {
+  try {
+    Validate(d);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CrashDescriptionTest, BadDescriptionsNameTheFieldAndReason) {
+  CrashDescription d;
+  EXPECT_EQ(ErrorOf(d).rfind("vehicles:", 0), 0u);
+
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[0].travel.Set(Compass::kNorth, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kSouth, Provenance::kStated);
+  EXPECT_EQ(ErrorOf(d).rfind("vehicles[1].travel: south contradicts crash type rear_end", 0), 0u) << ErrorOf(d);
+
+  d = Pair(CrashType::kAngle);
+  d.vehicles[0].travel.Set(Compass::kEast, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kWest, Provenance::kStated);
+  EXPECT_NE(ErrorOf(d).find("contradicts crash type angle"), std::string::npos);
+
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[0].speed.Set(120.0, Provenance::kStated);
+  EXPECT_EQ(ErrorOf(d).rfind("vehicles[0].speed: ", 0), 0u);
+  EXPECT_NE(ErrorOf(d).find("impossible"), std::string::npos);
+
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[1].movement.Set(Manoeuvre::kStopped, Provenance::kStated);
+  d.vehicles[1].speed.Set(15.0, Provenance::kStated);
+  EXPECT_NE(ErrorOf(d).find("contradicts movement stopped"), std::string::npos);
+
+  d = Pair(CrashType::kRearEnd);
+  d.struck.Set("V1", Provenance::kStated);
+  EXPECT_EQ(ErrorOf(d).rfind("struck: the same vehicle", 0), 0u);
+
+  d = Pair(CrashType::kRearEnd);
+  d.striker.Set("V7", Provenance::kStated);
+  EXPECT_EQ(ErrorOf(d).rfind("striker: no vehicle 'V7'", 0), 0u);
+
+  d = Pair(CrashType::kRearEnd);
+  d.road.lanes_per_direction.Set(9, Provenance::kStated);
+  EXPECT_EQ(ErrorOf(d).rfind("road.lanes_per_direction:", 0), 0u);
+
+  EXPECT_EQ(ErrorOf(Pair(CrashType::kHeadOn)), "");
+}
+
+TEST(CrashDescriptionTest, JsonRoundTripKeepsValuesAndProvenance) {
+  CrashDescription d = Pair(CrashType::kTurnAcrossPath);
+  d.source_id = "case 7";
+  d.road.type.Set(RoadType::kIntersection, Provenance::kStated);
+  d.road.speed_limit.Set(17.9, Provenance::kInferred);
+  d.vehicles[0].movement.Set(Manoeuvre::kTurnLeft, Provenance::kStated);
+  d.vehicles[0].speed.Set(6.5, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kSouth, Provenance::kInferred);
+  d.vehicles[1].impact_area.Set(ImpactArea::kFrontLeft, Provenance::kStated);
+  d.notes = {"a note"};
+  const CrashDescription r = CrashDescriptionFromJson(ToJson(d));
+  EXPECT_EQ(ToJson(r), ToJson(d));
+  EXPECT_EQ(r.road.speed_limit.source, Provenance::kInferred);
+  EXPECT_EQ(*r.vehicles[1].travel.value, Compass::kSouth);
+  EXPECT_FALSE(r.vehicles[0].travel.value.has_value());
+
+  nlohmann::json bad = ToJson(d);
+  bad["vehicles"][1]["movement"]["value"] = "flying";
+  try {
+    CrashDescriptionFromJson(bad);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("flying"), std::string::npos);
+  }
+}
+
+TEST(CrashDescriptionTest, CornersIncludeBothFaces) {
+  EXPECT_TRUE(AreaIncludes(ImpactArea::kFrontLeft, ImpactArea::kLeft));
+  EXPECT_TRUE(AreaIncludes(ImpactArea::kFrontLeft, ImpactArea::kFront));
+  EXPECT_FALSE(AreaIncludes(ImpactArea::kFrontLeft, ImpactArea::kRear));
+  EXPECT_TRUE(AreaIncludes(ImpactArea::kUnknown, ImpactArea::kRear));
+  EXPECT_EQ(ImpactAreaFrom(DamageArea::kLeft, "left-rear"), ImpactArea::kRearLeft);
+  EXPECT_EQ(ImpactAreaFrom(DamageArea::kFront, ""), ImpactArea::kFront);
+}
+
+TEST(CrashDescriptionTest, FromAccidentRecordKeepsProvenanceAndMapsLayouts) {
+  AccidentRecord r;
+  EXPECT_THROW(FromAccidentRecord(r), std::invalid_argument);
+  r.road.kind.Set(RoadKind::kDriveway, Provenance::kStated);
+  r.vehicles.resize(2);
+  r.vehicles[0].id = "V1";
+  r.vehicles[1].id = "V2";
+  r.vehicles[0].speed_mps.Set(20.0, Provenance::kStated);
+  r.vehicles[1].movement.Set(Movement::kTurnLeft, Provenance::kStated);
+  r.crash.striking.Set("V1", Provenance::kStated);
+  r.crash.struck.Set("V2", Provenance::kStated);
+  r.crash.struck_area.Set(DamageArea::kLeft, Provenance::kStated);
+  const CrashDescription d = FromAccidentRecord(r);
+  EXPECT_EQ(d.road.type.value, RoadType::kTJunction);
+  EXPECT_EQ(d.road.type.source, Provenance::kInferred);
+  EXPECT_NE(d.road.layout_note.find("driveway"), std::string::npos);
+  EXPECT_EQ(*d.vehicles[0].speed.value, 20.0);
+  EXPECT_FALSE(d.vehicles[1].speed.value.has_value());
+  EXPECT_EQ(d.vehicles[1].movement.value, Manoeuvre::kTurnLeft);
+  EXPECT_EQ(d.vehicles[1].impact_area.value, ImpactArea::kLeft);
+  EXPECT_EQ(d.striker.value, "V1");
+  EXPECT_NO_THROW(Validate(d));
+}
+
+}  // namespace
+}  // namespace accsim
