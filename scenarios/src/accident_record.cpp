@@ -158,6 +158,7 @@ nlohmann::json ToJson(const AccidentRecord& r) {
                         {"travel", J(v.travel, kCompass)},
                         {"lane", J(v.lane)},
                         {"movement", J(v.movement, kStr)},
+                        {"pre_event_movement", J(v.pre_event, kStr)},
                         {"speed_mps", J(v.speed_mps)},
                         {"speed_unit", J(v.speed_unit)},
                         {"parked", J(v.parked)}});
@@ -276,6 +277,9 @@ AccidentRecord AccidentRecordFromJson(const nlohmann::json& j) {
       });
       ReadField(vj, "lane", p, v.lane, [](const nlohmann::json& x) { return CountIn(x, 0, 16); });
       ReadField(vj, "movement", p, v.movement, [&](const nlohmann::json& x) { return MovementFromString(str(x)); });
+      v.pre_event = v.movement;
+      ReadField(vj, "pre_event_movement", p, v.pre_event,
+                [&](const nlohmann::json& x) { return MovementFromString(str(x)); });
       ReadField(vj, "speed_mps", p, v.speed_mps, [](const nlohmann::json& x) {
         const double s = x.get<double>();
         if (!(s >= 0.0 && s < 90.0)) throw std::invalid_argument("out of range [0, 90) m/s");

@@ -234,7 +234,7 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
         const auto want = MovementLabel(Get(vehicles[i], "pre_event_movement"));
         if (!want) continue;
         ++n;
-        const Movement have = i < r.vehicles.size() ? r.vehicles[i].movement.value : Movement::kUnknown;
+        const Movement have = i < r.vehicles.size() ? r.vehicles[i].pre_event.value : Movement::kUnknown;
         ok += *want == have;
         if (*want != have) {
           miss("driving_actions V" + std::to_string(i + 1), std::string(ToString(*want)), std::string(ToString(have)));

@@ -136,9 +136,15 @@ Kind KindOf(const string& s) {
       R"(towed|driven from the scene|driven away|fled|contact lens|pregnan)");
   static const regex kStatement(
       R"(\b(?:stated|said|says|states|indicated|reported|advised|according to|recalled|estimated|told|admitted|claimed)\b)");
+  // Who drove and who rode along is often folded into a motion sentence
+  // ("v1, a 1996 cavalier driven by a 17-year old male, was traveling
+  // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
+  // make the sentence one about people.
+  static const regex kPeoplePhrase(
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
-  if (Has(s, kPeople)) return Kind::kPeople;
+  if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
   return Kind::kNarrative;
 }
 
@@ -236,12 +242,25 @@ std::optional<Compass> CompassWord(const string& w) {
 std::optional<Compass> DirectionIn(const string& s) {
   static const regex kDir(
       R"(\b(north|south|east|west)[- ]?bound\b|\b(?:travel+(?:ing|ed|s)?|heading|headed|going|proceeding|proceeded|driving|moving|approaching from the|turn(?:ing|ed)?)\s+(?:due\s+)?(north|south|east|west)\b(?![/-]?(?:east|west))|\bin an? (north|south|east|west)(?:erly|ern)? direction)");
-  smatch m;
-  if (!std::regex_search(s, m, kDir)) return std::nullopt;
-  for (int g = 1; g <= 3; ++g) {
-    if (m[g].matched) return CompassWord(m[g].str());
+  // "in its westbound lane traveling east": a lane's direction is where the
+  // vehicle is, a verb of travel says where it goes; the verb wins.
+  static const regex kBoundLane(R"(^\w+[- ]?bound\s+(?:travel\s+|through\s+)?lanes?\b)");
+  std::optional<Compass> lane_direction;
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), kDir); it != std::sregex_iterator(); ++it) {
+    const smatch& m = *it;
+    for (int g = 1; g <= 3; ++g) {
+      if (!m[g].matched) continue;
+      const bool turn = m[0].str().rfind("turn", 0) == 0;
+      if (g == 1 && Has(m[0].str() + s.substr(static_cast<size_t>(m.position() + m.length())), kBoundLane)) {
+        if (!lane_direction) lane_direction = CompassWord(m[g].str());
+      } else if (turn && lane_direction) {
+        return lane_direction;
+      } else {
+        return CompassWord(m[g].str());
+      }
+    }
   }
-  return std::nullopt;
+  return lane_direction;
 }
 
 bool Opposite(Compass a, Compass b) { return (static_cast<int>(a) + 2) % 4 == static_cast<int>(b); }
@@ -308,6 +327,7 @@ struct MovementEvidence {
   bool slowing = false, straight = false;
   bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
   bool coded_lane_change = false, other_says_stopped = false;
+  bool rolled_stop = false, no_stop = false;
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
            back || pass || slowing;
@@ -321,6 +341,9 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kStopThenGo(
       R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b)");
+  static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
+  static const regex kNoStop(
+      R"(\b(?:failed to|did not|didn't|never|without)\s+(?:\w+\s+)?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
       R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   static const regex kLeft(
@@ -332,7 +355,9 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kLaneChange(
       R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|steered|swerved|veered|drifted|merged|pulled|crossed)\s+(?:\w+\s+){0,3}?into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
   static const regex kMerge(R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from)");
-  static const regex kBack(R"(\bback(?:ed|ing)\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
+  // "traffic was backed up" is a queue, not a vehicle reversing.
+  static const regex kBack(
+      R"((?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)back(?:ed|ing)\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
   static const regex kPass(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b)");
   static const regex kSlow(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b)");
   static const regex kStraight(
@@ -340,7 +365,9 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   const bool parked = Has(t, kParked);
   if (parked && !Has(t, kLeavingParking)) e.parked = true;
   if (Has(t, kLeavingParking)) e.leaving_parking = true;
-  if (Has(t, kStopState) && !parked) {
+  if (Has(t, kRolledStop)) e.rolled_stop = true;
+  if (Has(t, kNoStop)) e.no_stop = true;
+  if (Has(t, kStopState) && !parked && !Has(t, kNoStop)) {
     if (Has(t, kStopThenGo)) {
       e.stop_cancelled = true;
     } else {
@@ -378,24 +405,132 @@ void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other
   if (other && Has(t, kOtherStopped)) other->other_says_stopped = true;
 }
 
-std::pair<Movement, Provenance> DecideMovement(const MovementEvidence& n, const MovementEvidence& st) {
+struct MovementDecision {
+  Movement manoeuvre = Movement::kStraight;  // the path into the crash
+  Movement pre_event = Movement::kStraight;  // NASS pre-event movement: what it did before the critical event
+  Provenance source = Provenance::kInferred;
+};
+
+MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidence& st) {
   // Narrative statements first; driver statements only when the narrative is silent.
   const MovementEvidence& e = n.any_narrative() ? n : st;
-  if (e.parked || n.parked) return {Movement::kStopped, Provenance::kStated};
-  if (e.back || n.coded_back) return {Movement::kBacking, Provenance::kStated};
-  if (e.leaving_parking) return {Movement::kMerging, Provenance::kStated};
+  auto both = [](Movement m, Provenance p) { return MovementDecision{m, m, p}; };
+  if (e.parked || n.parked) return both(Movement::kStopped, Provenance::kStated);
+  if (e.back || n.coded_back) return both(Movement::kBacking, Provenance::kStated);
+  if (e.leaving_parking) return both(Movement::kMerging, Provenance::kStated);
+  // A vehicle the narrative leaves stopped or waiting to turn, whose driver
+  // says it then turned, turned.
+  const bool confirmed_left = n.stopped && st.turn_left && !st.turn_right;
+  const bool confirmed_right = n.stopped && st.turn_right && !st.turn_left;
+  const bool left = e.turn_left || (!e.turn_right && (n.coded_turn_left || confirmed_left));
+  const bool right = !left && (e.turn_right || n.coded_turn_right || confirmed_right);
+  if (left || right) {
+    // A vehicle that turned after a stop (at a sign, a light, or waiting for
+    // a gap) has the stop as its pre-event movement, one that rolled through
+    // has its slowing: NASS codes what it did before the critical turn.
+    // Statements count here: the narrative often only says "approaching the
+    // stop sign ... turned left".
+    MovementDecision d{left ? Movement::kTurnLeft : Movement::kTurnRight, Movement::kStraight, Provenance::kStated};
+    d.pre_event = d.manoeuvre;
+    const bool stopped = n.stopped || n.stop_cancelled || st.stopped || st.stop_cancelled;
+    if (n.rolled_stop || st.rolled_stop) d.pre_event = Movement::kSlowing;
+    else if (stopped && !n.no_stop && !st.no_stop) d.pre_event = Movement::kStopped;
+    return d;
+  }
   // A stop before the critical event is the pre-crash movement even when a
-  // turn was intended or begun afterwards (how NASS codes it).
-  if (e.stopped) return {Movement::kStopped, Provenance::kStated};
-  if (e.turn_left || (!e.turn_right && n.coded_turn_left)) return {Movement::kTurnLeft, Provenance::kStated};
-  if (e.turn_right || n.coded_turn_right) return {Movement::kTurnRight, Provenance::kStated};
-  if (e.lane_change || n.coded_lane_change) return {Movement::kChangingLanes, Provenance::kStated};
-  if (e.merge) return {Movement::kMerging, Provenance::kStated};
-  if (e.pass) return {Movement::kPassing, Provenance::kStated};
-  if (n.other_says_stopped && !e.stop_cancelled) return {Movement::kStopped, Provenance::kInferred};
-  if (e.slowing) return {Movement::kSlowing, Provenance::kStated};
-  if (e.straight || n.coded_straight || e.stop_cancelled) return {Movement::kStraight, Provenance::kStated};
-  return {Movement::kStraight, Provenance::kInferred};
+  // turn was intended afterwards (how NASS codes it).
+  if (e.stopped) return both(Movement::kStopped, Provenance::kStated);
+  if (e.lane_change || n.coded_lane_change) return both(Movement::kChangingLanes, Provenance::kStated);
+  if (e.merge) return both(Movement::kMerging, Provenance::kStated);
+  if (e.pass) return both(Movement::kPassing, Provenance::kStated);
+  if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
+  if (e.slowing || n.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
+  if (e.straight || n.coded_straight || e.stop_cancelled) return both(Movement::kStraight, Provenance::kStated);
+  return both(Movement::kStraight, Provenance::kInferred);
+}
+
+// NHTSA's critical pre-crash events, when a report quotes them ("the
+// critical precrash event for v2 was other vehicle encroachment from
+// crossing street, turning into opposite direction"), name the configuration
+// the investigators coded. Pairs of events map to crash-type categories:
+// turning into a direction -> turn into path; a turn against traffic from the
+// opposite direction or an adjacent lane -> turn across path; other vehicle
+// stopped, decelerating or slower -> rear-end; crossing paths -> angle (turn
+// into path when one of them turned); an adjacent lane -> sideswipe same
+// direction; the opposite direction -> head-on or sideswipe by the damage.
+std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, bool lane_change, bool front_to_front) {
+  static const regex kNotInvolved(R"(\bnot involved (?:in )?(?:the )?first harmful)");
+  static const regex kIntoPath(R"(\bturning into (?:the )?(?:same|opposite|oppsite) direction)");
+  static const regex kTurning(R"(\bturning (?:left|right) at (?:the |an )?intersection|\b(?:began|begin|started) to turn (?:left|right))");
+  static const regex kTurningRight(R"(\bturning right at|\bbegan to turn right)");
+  static const regex kFromOpposite(R"(\bfrom (?:the )?opposite direction|\b(?:traveling|travelling) in (?:the )?opposite direction)");
+  static const regex kAdjacent(R"(\bfrom (?:an |the )?adjacent lane)");
+  static const regex kRearEnd(
+      R"(\bother (?:motor )?vehicle (?:in lane,? )?(?:was )?stopped|\bin lane and was stopped|\bsame direction (?:while decelerating|(?:with|at) (?:a )?(?:higher|lower|slower) speed))");
+  static const regex kCrossingPaths(R"(\bcrossing street,? across (?:\w+ )?path)");
+  if (Has(coded, kNotInvolved)) return CrashType::kSingleVehicle;
+  if (Has(coded, kIntoPath)) return CrashType::kTurnIntoPath;
+  const bool turning = turner || Has(coded, kTurning);
+  if (Has(coded, kFromOpposite) && turning) return CrashType::kTurnAcrossPath;
+  if (Has(coded, kAdjacent) && ((turner && !lane_change) || Has(coded, kTurningRight))) return CrashType::kTurnAcrossPath;
+  if (Has(coded, kRearEnd)) return CrashType::kRearEnd;
+  if (Has(coded, kCrossingPaths)) return turning ? CrashType::kTurnIntoPath : CrashType::kAngle;
+  if (Has(coded, kAdjacent)) return CrashType::kSideswipeSame;
+  if (Has(coded, kFromOpposite)) return front_to_front ? CrashType::kHeadOn : CrashType::kSideswipeOpposite;
+  return std::nullopt;
+}
+
+// The usual U.S. posted limit of a road class the report names, for reports
+// that do not state one (CIREN's narratives never do): freeways 70 mph,
+// rural roads and highways 55, urban arterials 35, residential streets 25,
+// private roads and parking lots 15. Unnamed classes get none.
+std::optional<double> TypicalLimitMph(const string& scene) {
+  static const std::array<std::pair<regex, double>, 6> kClasses = {{
+      {regex(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b)"), 70.0},
+      {regex(R"(\b(?:parking (?:lot|area|garage)|private (?:road|drive))\b)"), 15.0},
+      {regex(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)"), 25.0},
+      {regex(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)"), 55.0},
+      {regex(R"(\b(?:urban|city|downtown|business district|commercial)\b)"), 35.0},
+      {regex(R"(\bhighway\b)"), 55.0},
+  }};
+  for (const auto& [re, mph] : kClasses) {
+    if (Has(scene, re)) return mph;
+  }
+  return std::nullopt;
+}
+
+// "exiting a parking lot driveway", "at the parking lot exit".
+bool LeavesDriveway(const string& t) {
+  static const regex kFromDriveway(
+      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b)");
+  return Has(t, kFromDriveway);
+}
+
+// A crash type the report states (investigators' coding, "rear-ended",
+// "head-on") fixes how the two vehicles' directions relate. When the
+// directions read from the text disagree (reports do contradict themselves:
+// "struck the rear of v2" and "v2 had been stopped in the northbound lane"
+// with v1 southbound), the later-numbered vehicle's direction is taken to be
+// the wrong one; a warning names it.
+void ReconcileDirections(AccidentRecord& r, size_t ia, size_t ib) {
+  if (ia >= r.vehicles.size() || ib >= r.vehicles.size() || ia == ib) return;
+  if (r.crash.type.source != Provenance::kStated) return;
+  const auto& ta = r.vehicles[ia].travel;
+  const auto& tb = r.vehicles[ib].travel;
+  if (!ta.known() || !tb.known() || !ta.value || !tb.value) return;
+  const CrashType t = r.crash.type.value;
+  const bool want_same = t == CrashType::kRearEnd || t == CrashType::kSideswipeSame;
+  const bool want_opposite = t == CrashType::kHeadOn || t == CrashType::kSideswipeOpposite;
+  const Compass da = *ta.value, db = *tb.value;
+  if (!(want_same && da != db) && !(want_opposite && !Opposite(da, db))) return;
+  const size_t wrong = std::max(ia, ib);
+  const Compass keep = wrong == ib ? da : db;
+  const Compass fixed = want_same ? keep : static_cast<Compass>((static_cast<int>(keep) + 2) % 4);
+  auto& travel = r.vehicles[wrong].travel;
+  r.warnings.push_back("vehicles[" + std::to_string(wrong) + "].travel: '" + string(ToString(*travel.value)) +
+                       "' contradicts the stated crash type " + string(ToString(t)) + "; taken as '" +
+                       string(ToString(fixed)) + "'");
+  travel.Set(fixed, Provenance::kInferred);
 }
 
 bool Turning(Movement m) { return m == Movement::kTurnLeft || m == Movement::kTurnRight; }
@@ -571,10 +706,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     int vehicle;
     size_t sentence;
     string text;
+    bool perceived = false;  // what another driver saw this vehicle do
   };
   static const regex kSubjectBefore(
       R"((?:^|[,:(]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
-  static const regex kRelativeAfter(R"(^(?:,?\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|is|had|has)\b)");
+  // "behind v2, a jetta, which was stopped", and appositives "v2, a parked
+  // and unoccupied ciera": both describe that vehicle.
+  static const regex kRelativeAfter(
+      R"(^(?:,?\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|is|had|has)\b|^,\s*an?\s)");
+  // What a driver saw another vehicle do ("she saw v1 waiting to turn") is
+  // about that vehicle, but the sentence stays the observer's.
+  static const regex kPerceivedBefore(R"(\b(?:saw|seen|see|seeing|observed|noticed|watched)\s*$)");
+  static const regex kPerceivedState(
+      R"(^\s+(?:was\s+)?(?:stopped|stationary|waiting|sitting|turning|making|pulling|backing|slowing|traveling|travelling|approaching|coming|entering|exiting|changing)\b)");
   static const regex kOtherVehicle(
       R"(\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b)");
   std::vector<Segment> segments;
@@ -584,20 +728,29 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     struct Start {
       size_t pos;
       int vehicle;
+      bool perceived;  // seen by another driver: does not move the focus
     };
     std::vector<Start> starts;
     for (const Ref& ref : s.refs) {
       const string before = s.text.substr(ref.pos > 40 ? ref.pos - 40 : 0, ref.pos > 40 ? 40 : ref.pos);
       const string after = s.text.substr(ref.pos + 2, 80);
-      if (Has(before, kSubjectBefore) || Has(after, kRelativeAfter)) starts.push_back({ref.pos, ref.vehicle});
+      if (Has(before, kSubjectBefore) || Has(after, kRelativeAfter)) {
+        starts.push_back({ref.pos, ref.vehicle, false});
+      } else if (Has(before, kPerceivedBefore) && Has(after, kPerceivedState)) {
+        starts.push_back({ref.pos, ref.vehicle, true});
+      }
     }
     // Text before the first start belongs to the sentence's focus (pronoun sentences, "as he stopped, ...").
     const size_t first = starts.empty() ? s.text.size() : starts.front().pos;
+    // A segment that starts at a vehicle reference skips it; a continuation
+    // ("traffic was backed up", "a noncontact car slowed") may be about
+    // another road user from its first word.
     auto cut = [&](size_t from, size_t to) {
       string t = s.text.substr(from, to - from);
+      const size_t skip = from == 0 && (starts.empty() || starts.front().pos > 0) ? 0 : std::min<size_t>(t.size(), 3);
       smatch m;
-      if (std::regex_search(t.cbegin() + std::min<size_t>(t.size(), 3), t.cend(), m, kOtherVehicle)) {
-        t = t.substr(0, static_cast<size_t>(m.position()) + std::min<size_t>(t.size(), 3));
+      if (std::regex_search(t.cbegin() + static_cast<std::ptrdiff_t>(skip), t.cend(), m, kOtherVehicle)) {
+        t = t.substr(0, static_cast<size_t>(m.position()) + skip);
       }
       return t;
     };
@@ -607,8 +760,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       const int owner = s.kind == Kind::kCoding && !s.refs.empty() ? s.refs.front().vehicle : focus;
       if (owner > 0) segments.push_back({owner, i, cut(0, first)});
     }
-    if (!starts.empty()) {
-      focus = starts.front().vehicle;
+    const auto subject = std::find_if(starts.begin(), starts.end(), [](const Start& st) { return !st.perceived; });
+    if (subject != starts.end()) {
+      focus = subject->vehicle;
     } else if (s.kind == Kind::kCoding && !s.refs.empty()) {
       focus = s.refs.front().vehicle;
     }
@@ -621,7 +775,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           break;
         }
       }
-      segments.push_back({starts[k].vehicle, i, cut(starts[k].pos, end)});
+      segments.push_back({starts[k].vehicle, i, cut(starts[k].pos, end), starts[k].perceived});
     }
   }
 
@@ -664,9 +818,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         v.speed_unit.Set(kmh ? "km/h" : "mph", Provenance::kStated);
       }
     }
-    if (kind == Kind::kNarrative && pre_impact) {
+    if (kind == Kind::kNarrative && pre_impact && !seg.perceived) {
       ReadMovement(seg.text, narrative[vi]);
-    } else if (kind == Kind::kStatement || (kind == Kind::kPeople && Has(seg.text, regex(R"(\bparked\b)")))) {
+    } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, regex(R"(\bparked\b)")))) {
       ReadMovement(seg.text, statement[vi]);
     } else if (kind == Kind::kCoding) {
       MovementEvidence* other = nullptr;
@@ -688,9 +842,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
     if (narrative[i + 1].parked || statement[i + 1].parked) v.parked.Set(true, Provenance::kStated);
-    const auto [mv, src] = DecideMovement(narrative[i + 1], statement[i + 1]);
-    v.movement.Set(mv, src);
-    if (v.parked.value) v.movement.Set(Movement::kStopped, Provenance::kStated);
+    const MovementDecision d = DecideMovement(narrative[i + 1], statement[i + 1]);
+    v.movement.Set(d.manoeuvre, d.source);
+    v.pre_event.Set(d.pre_event, d.source);
+    if (v.parked.value) {
+      v.movement.Set(Movement::kStopped, Provenance::kStated);
+      v.pre_event.Set(Movement::kStopped, Provenance::kStated);
+    }
   }
 
   // ---- Road: kind, lanes, division, surface, weather, light, grade, limit.
@@ -745,7 +903,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // (", and a ...") sits between the count and the word.
         const string near_before = s.text.substr(pos > 25 ? pos - 25 : 0, pos > 25 ? 25 : pos);
         string near_after = s.text.substr(pos + static_cast<size_t>(m.length(0)), 15);
-        const size_t stop = std::min(near_after.find(','), near_after.find(" and "));
+        // ... but "a 1-lane, oneway roadway" lists adjectives of one road.
+        const size_t comma = near_after.rfind(", oneway", 0) == 0 || near_after.rfind(",oneway", 0) == 0
+                                 ? string::npos
+                                 : near_after.find(',');
+        const size_t stop = std::min(comma, near_after.find(" and "));
         if (stop != string::npos) near_after = near_after.substr(0, stop);
         rs.one_way = Has(near_before, kOneWayHere) || Has(near_after, kOneWayHere);
         rs.total = total;
@@ -779,26 +941,55 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       return nullptr;
     };
-    const RoadStatement* best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
-    if (!best && v1_axis >= 0) {
+    // Reports of a one-way road crossing a two-way one say which V1 used
+    // ("v1 ... was traveling eastbound on the one-way roadway"); when only the
+    // other vehicle is placed on the one-way road, V1 used the two-way one.
+    static const regex kOnOneWay(R"(\b(?:on|along|from|down|up|in) (?:the|a|an) (?:\w+ ){0,2}?oneway\b)");
+    static const regex kOnTwoWay(
+        R"(\b(?:on|along|from|down|up|in) (?:the|a|an) (?:\w+ ){0,2}?2[- ]way (?:road|roadway|street|highway|avenue|trafficway)\b)");
+    int v1_way = 0;  // +1 one-way, -1 two-way, 0 not said
+    for (const Segment& seg : segments) {
+      if (seg.perceived || sentences[seg.sentence].kind == Kind::kCoding) continue;
+      if (seg.vehicle == 1 && Has(seg.text, kOnOneWay)) v1_way = 1;
+      else if (seg.vehicle == 1 && Has(seg.text, kOnTwoWay) && v1_way == 0) v1_way = -1;
+    }
+    static const regex kTwoWay(R"(\b2[- ]way\b)");
+    if (v1_way == 0 && Has(scene, kTwoWay)) {
+      for (const Segment& seg : segments) {
+        if (seg.vehicle > 1 && !seg.perceived && Has(seg.text, kOnOneWay)) v1_way = -1;
+      }
+    }
+    const RoadStatement* best = nullptr;
+    if (v1_way != 0) best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.one_way == (v1_way > 0); });
+    if (!best && v1_way > 0) {
+      // On a one-way road whose lanes the report does not count: one lane.
+      r.road.one_way.Set(true, Provenance::kStated);
+      r.road.lanes_total.Set(1, Provenance::kInferred);
+      r.road.lanes_per_direction.Set(1, Provenance::kInferred);
+    }
+    if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
+    if (!best && v1_way <= 0 && v1_axis >= 0) {
       best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == v1_axis; });
     }
-    if (!best) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
-    if (!best && !roads.empty()) best = &roads.front();
+    if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
+    if (!best && v1_way <= 0 && !roads.empty()) best = &roads.front();
     if (best) {
       // Combine statements about the same road (a total in one sentence, the
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
       bool one_way = best->one_way;
       for (const auto& rs : roads) {
-        if (&rs == best || rs.owner > 1 || (rs.axis && best->axis && rs.axis != best->axis)) continue;
+        if (&rs == best || rs.owner > 1 || rs.one_way != best->one_way ||
+            (rs.axis && best->axis && rs.axis != best->axis)) {
+          continue;
+        }
         if (rs.sentence > best->sentence + 1) continue;
         if (!total && rs.total) total = rs.total;
         if (!per && rs.per_direction) per = rs.per_direction;
         if (!directional && rs.directional) directional = rs.directional;
       }
       static const regex kOneWaySentence(R"(\boneway\b)");
-      if (!one_way && Has(sentences[best->sentence].text, kOneWaySentence) &&
+      if (!one_way && v1_way == 0 && Has(sentences[best->sentence].text, kOneWaySentence) &&
           !Has(sentences[best->sentence].text, regex(R"(\b2[- ]way\b|\band (?:a|an)\b)"))) {
         one_way = true;
       }
@@ -831,6 +1022,28 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // "the 2 northbound lanes of a divided highway": a count next to a
       // direction word on a divided road is that direction's count.
       r.road.lanes_per_direction.Set(r.road.lanes_total.value, Provenance::kInferred);
+    }
+    // V1 leaving a driveway or parking lot was on it: NASS counts its lanes,
+    // a two-way drive of one lane each way unless the report counts them.
+    static const regex kMiddleLane(R"(\bmiddle (?:travel |through )?lane\b)");
+    bool v1_from_driveway = false, v1_middle_lane = false;
+    for (const Segment& seg : segments) {
+      if (seg.vehicle != 1 || seg.perceived || seg.sentence > impact || sentences[seg.sentence].kind != Kind::kNarrative) continue;
+      if (LeavesDriveway(seg.text)) v1_from_driveway = true;
+      if (Has(seg.text, kMiddleLane)) v1_middle_lane = true;
+    }
+    if (v1_from_driveway && !(best && best->owner == 1)) {
+      r.road.one_way.Set(false, Provenance::kInferred);
+      r.road.divided.Set(false, Provenance::kInferred);
+      r.road.lanes_total.Set(2, Provenance::kInferred);
+      r.road.lanes_per_direction.Set(1, Provenance::kInferred);
+    }
+    // A middle lane, or a stated lane number beyond the count, means more lanes.
+    const int lanes_needed = std::max(v1_middle_lane ? 3 : 0, r.vehicles.empty() ? 0 : r.vehicles[0].lane.value);
+    if (!v1_from_driveway && lanes_needed > r.road.lanes_per_direction.value) {
+      const int extra = lanes_needed - r.road.lanes_per_direction.value;
+      r.road.lanes_per_direction.Set(lanes_needed, Provenance::kInferred);
+      r.road.lanes_total.Set(r.road.lanes_total.value + (r.road.one_way.value ? extra : 2 * extra), Provenance::kInferred);
     }
   }
   static const regex kIce(R"(\b(?:icy|ice|frost|black ice|frozen)\b)");
@@ -939,6 +1152,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (pick) {
       r.road.speed_limit_mps.Set(pick->mps, Provenance::kStated);
       r.road.speed_limit_unit.Set(pick->unit, Provenance::kStated);
+    }
+  }
+  if (!r.road.speed_limit_mps.known()) {
+    if (const auto mph = TypicalLimitMph(scene)) {
+      r.road.speed_limit_mps.Set(*mph * kMphToMps, Provenance::kInferred);
+      r.road.speed_limit_unit.Set("mph", Provenance::kInferred);
     }
   }
 
@@ -1058,7 +1277,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const AreaWords w = area_words.count(striker) ? area_words[striker] : AreaWords{};
     if (sv.movement.value == Movement::kStopped && !narrative[static_cast<size_t>(striker)].stopped &&
         !sv.parked.value && (w.front || !w.any())) {
-      sv.movement.Set(Movement::kStraight, Provenance::kInferred);
+      const MovementEvidence& e = narrative[static_cast<size_t>(striker)];
+      const Movement moving = e.turn_left || e.coded_turn_left    ? Movement::kTurnLeft
+                              : e.turn_right || e.coded_turn_right ? Movement::kTurnRight
+                                                                   : Movement::kStraight;
+      sv.movement.Set(moving, Provenance::kInferred);
+      sv.pre_event.Set(moving, Provenance::kInferred);
     }
   }
 
@@ -1114,7 +1338,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
       }
     }
-    if (Has(impact_text, regex(R"(\brear[- ]end)"))) {
+    // Front corners count as fronts here: investigators code "the front left
+    // of v2 with its front left" as a head-on.
+    const bool front_to_front = sa.front && (sb.front || !sb.any());
+    if (const auto from_coding =
+            CrashTypeFromCoding(coded, turner != nullptr, Has(impact_text, kLaneChangeNow), front_to_front)) {
+      type = *from_coding;
+      type_src = Provenance::kStated;
+    } else if (Has(impact_text, regex(R"(\brear[- ]end)"))) {
       type = CrashType::kRearEnd;
     } else if (Has(impact_text, regex(R"(\bhead[- ]on\b)"))) {
       type = CrashType::kHeadOn;
@@ -1151,6 +1382,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     (void)before_impact;
   }
   r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : type_src);
+  if (a && b) {
+    ReconcileDirections(r, static_cast<size_t>(a - r.vehicles.data()), static_cast<size_t>(b - r.vehicles.data()));
+  }
 
   // ---- Damaged planes, now that the configuration is known.
   auto plane = [&](const AreaWords& w, bool is_striker) -> DamageArea {
@@ -1216,7 +1450,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     static const regex kAtIntersection(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b)");
-    if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection)) {
+    // A vehicle leaving a driveway or lot puts the crash at its access, even
+    // where the drive forms a leg of an intersection (NASS "driveway, alley
+    // access").
+    const bool from_driveway = std::any_of(segments.begin(), segments.end(), [&](const Segment& seg) {
+      return !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative &&
+             LeavesDriveway(seg.text);
+    });
+    if (from_driveway) {
+      r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
+    } else if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection)) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);

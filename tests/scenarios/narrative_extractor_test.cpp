@@ -191,5 +191,121 @@ TEST(NarrativeExtractorTest, SameTextSameRecordAcrossThreads) {
   EXPECT_EQ(same, 4);
 }
 
+// Invented reports, one per rule; none is taken from the labelled sets.
+
+TEST(NarrativeExtractorTest, StopThenTurnIsStoppedBeforeTheTurn) {
+  const auto r = kExtractor.Extract(
+      "V1, a 2003 Buick Century driven by a 52-year old female, was traveling north on a side street with one "
+      "occupant. She stopped at the stop sign and then began to turn left onto the main road. V2, a 2006 Kia "
+      "Rio, was traveling west on the main road. The front of V2 struck the left side of V1.");
+  // The manoeuvre into the crash is the turn; the pre-event movement is the stop.
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kNorth);  // "driven by ..., with one occupant" is still motion
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, RollingStopBeforeTurnIsSlowing) {
+  const auto r = kExtractor.Extract(
+      "Vehicle one rolled through the stop sign and turned right into the path of vehicle two, which was "
+      "traveling east. Vehicle two struck vehicle one in the left side.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnRight);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kSlowing);
+}
+
+TEST(NarrativeExtractorTest, WhatAnotherDriverSawIsAboutTheSeenVehicle) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling south in lane two. V2 was traveling north and turned left across the southbound lanes. "
+      "The front of V1 struck the right side of V2. The driver of V1 said she saw V2 waiting to turn and "
+      "thought it would yield.");
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStopped);
+}
+
+TEST(NarrativeExtractorTest, CodedCriticalEventsNameTheCrashType) {
+  // Front to front, yet the investigators' events say the turner crossed
+  // the path of a vehicle from the opposite direction.
+  const auto across = kExtractor.Extract(
+      "V1 was eastbound and made a left turn at the intersection. V2 was westbound. The front of V1 struck the "
+      "front of V2. The critical precrash event for V1 was this vehicle traveling, turning left at "
+      "intersection. The critical precrash event for V2 was other vehicle encroachment from opposite "
+      "direction over left lane line.");
+  EXPECT_EQ(across.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(across.crash.type.source, Provenance::kStated);
+  const auto into = kExtractor.Extract(
+      "V1 pulled out from the side road. V2 was traveling south. V2 struck V1. The critical pre-crash event for "
+      "V2 was other vehicle encroachment from crossing street, turning into same direction.");
+  EXPECT_EQ(into.crash.type.value, CrashType::kTurnIntoPath);
+  const auto crossing = kExtractor.Extract(
+      "V1 was northbound. V2 was eastbound. The front of V2 struck the left side of V1 in the intersection. The "
+      "critical precrash event for V1 was other vehicle encroaching from crossing street, across her path.");
+  EXPECT_EQ(crossing.crash.type.value, CrashType::kAngle);
+  const auto lead = kExtractor.Extract(
+      "V1 and V2 were westbound. V1 struck V2. The critical precrash event for V1 was other motor vehicle in "
+      "lane, other vehicle stopped.");
+  EXPECT_EQ(lead.crash.type.value, CrashType::kRearEnd);
+}
+
+TEST(NarrativeExtractorTest, StatedCrashTypeOverridesAContradictoryDirection) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling south when it struck the rear of V2 with its front. V2 had been stopped in the northbound "
+      "lane. The critical precrash event for V1 was other motor vehicle in lane, other vehicle stopped.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kSouth);
+  EXPECT_EQ(r.vehicles[1].travel.source, Provenance::kInferred);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.back().find("vehicles[1].travel"), std::string::npos);
+}
+
+TEST(NarrativeExtractorTest, TravelVerbBeatsTheDirectionOfTheLane) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling west when the driver saw V2, a motorcycle, in the westbound lane traveling east. V1 "
+      "struck V2 with its front.");
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
+}
+
+TEST(NarrativeExtractorTest, OneWayAndTwoWayRoadsAtOneIntersection) {
+  const auto one_way = kExtractor.Extract(
+      "The intersection joins a two-way road with one lane in each direction and a one-lane, one-way street. V1 "
+      "was traveling north on the one-way street. V2 was traveling east on the two-way road. V2 struck V1.");
+  EXPECT_TRUE(one_way.road.one_way.value);
+  EXPECT_EQ(one_way.road.lanes_total.value, 1);
+  const auto two_way = kExtractor.Extract(
+      "The intersection joins a two-way road with one lane in each direction and a one-lane, one-way street. V1 "
+      "was traveling east on the two-way road. V2 was traveling north on the one-way street. V2 struck V1.");
+  EXPECT_FALSE(two_way.road.one_way.value);
+  EXPECT_EQ(two_way.road.lanes_total.value, 2);
+}
+
+TEST(NarrativeExtractorTest, LeavingADrivewayPutsTheCrashAtTheDriveway) {
+  const auto r = kExtractor.Extract(
+      "The crash occurred at a four-leg intersection of a four-lane undivided road. V1 was exiting a parking lot "
+      "driveway and turned left. V2 was traveling north in lane two. V2 struck V1 in the left side.");
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kDriveway);
+  EXPECT_EQ(r.road.lanes_total.value, 2);  // the drive V1 was on
+  EXPECT_EQ(r.road.lanes_total.source, Provenance::kInferred);
+}
+
+TEST(NarrativeExtractorTest, RoadClassGivesAnInferredLimitOnlyWhenNoneIsPosted) {
+  const auto rural = kExtractor.Extract("V1 was traveling east on a two-lane rural road. V1 struck V2.");
+  EXPECT_NEAR(rural.road.speed_limit_mps.value, 55 * 0.44704, 1e-9);
+  EXPECT_EQ(rural.road.speed_limit_mps.source, Provenance::kInferred);
+  const auto posted = kExtractor.Extract(
+      "V1 was traveling east on a two-lane rural road; the posted speed limit was 45 mph. V1 struck V2.");
+  EXPECT_NEAR(posted.road.speed_limit_mps.value, 45 * 0.44704, 1e-9);
+  EXPECT_EQ(posted.road.speed_limit_mps.source, Provenance::kStated);
+  const auto unnamed = kExtractor.Extract("V1 was traveling east. V1 struck V2.");
+  EXPECT_FALSE(unnamed.road.speed_limit_mps.known());
+}
+
+TEST(NarrativeExtractorTest, PreEventMovementRoundTripsThroughJson) {
+  const auto r = kExtractor.Extract(
+      "V1 stopped at the stop sign and then turned left. V2 was traveling east. V2 struck V1.");
+  const AccidentRecord back = AccidentRecordFromJson(ToJson(r));
+  EXPECT_EQ(back.vehicles[0].pre_event.value, r.vehicles[0].pre_event.value);
+  EXPECT_EQ(back.vehicles[0].movement.value, r.vehicles[0].movement.value);
+}
+
 }  // namespace
 }  // namespace accsim

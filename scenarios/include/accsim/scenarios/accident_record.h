@@ -85,7 +85,11 @@ struct VehicleRecord {
   Field<std::string> description;               // make/model/body text as written
   Field<std::optional<Compass>> travel;         // initial direction of travel
   Field<int> lane{0};                           // lane number as stated (1 = first); 0 = not stated
-  Field<Movement> movement{Movement::kStraight};
+  Field<Movement> movement{Movement::kStraight};   // the manoeuvre into the crash
+  // NASS "pre-event movement": what the vehicle did before the critical
+  // event. Differs from `movement` when a vehicle stopped (or slowed) and
+  // then turned: stopped (slowing), while `movement` is the turn.
+  Field<Movement> pre_event{Movement::kStraight};
   Field<double> speed_mps{0.0};                 // [m/s] stated or reported travel speed
   Field<std::string> speed_unit{"mph"};         // unit the speed was stated in
   Field<bool> parked{false};                    // parked/unoccupied: an object, not a traffic unit
