@@ -328,6 +328,7 @@ struct MovementEvidence {
   bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
   bool coded_lane_change = false, other_says_stopped = false;
   bool rolled_stop = false, no_stop = false;
+  bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
            back || pass || slowing;
@@ -374,11 +375,17 @@ void ReadMovement(const string& t, MovementEvidence& e) {
       e.stopped = true;
     }
   }
+  static const regex kEntered(
+      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b)");
   const bool intention = Has(t, kIntention);
   if (!intention) {
     if (Has(t, kLeft)) e.turn_left = true;
     if (Has(t, kRight)) e.turn_right = true;
+  } else {
+    if (Has(t, kLeft)) e.intent_left = true;
+    if (Has(t, kRight)) e.intent_right = true;
   }
+  if (Has(t, kEntered)) e.entered = true;
   if (Has(t, kLaneChange)) e.lane_change = true;
   if (Has(t, kMerge)) e.merge = true;
   if (Has(t, kBack)) e.back = true;
@@ -420,8 +427,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   if (e.leaving_parking) return both(Movement::kMerging, Provenance::kStated);
   // A vehicle the narrative leaves stopped or waiting to turn, whose driver
   // says it then turned, turned.
-  const bool confirmed_left = n.stopped && st.turn_left && !st.turn_right;
-  const bool confirmed_right = n.stopped && st.turn_right && !st.turn_left;
+  // So did one that meant to turn and then entered the road.
+  const bool confirmed_left = (n.stopped && st.turn_left && !st.turn_right) || (n.intent_left && !n.intent_right && n.entered);
+  const bool confirmed_right = (n.stopped && st.turn_right && !st.turn_left) || (n.intent_right && !n.intent_left && n.entered);
   const bool left = e.turn_left || (!e.turn_right && (n.coded_turn_left || confirmed_left));
   const bool right = !left && (e.turn_right || n.coded_turn_right || confirmed_right);
   if (left || right) {
@@ -632,8 +640,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     for (size_t i = 0; i < sentences.size(); ++i) {
       const Sentence& s = sentences[i];
       if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
-      if (pass < 2 && s.kind == Kind::kStatement) continue;
-      if (!Has(s.text, kContact)) continue;
+      // A reported sentence usually retells the crash; one that describes the
+      // contact plane by plane ("..., but the right side of v1 struck the rear
+      // of v2") is the investigator's account.
+      static const regex kPlaneContact(
+          R"(\bthe\s+(?:front|rear|back|left|right)[a-z -]{0,25}?\s+of\s+v[1-9]\s+(?:\w+\s+)?(?:struck|contacted|impacted|hit)\b)");
+      if (pass < 2 && s.kind == Kind::kStatement && !Has(s.text, kPlaneContact)) continue;
+      // "could not avoid striking v1" foretells the impact; the sentence that
+      // tells it comes next.
+      static const regex kAvoided(
+          R"(\b(?:avoid\w*|prevent\w*|without)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b)");
+      if (!Has(std::regex_replace(s.text, kAvoided, " "), kContact)) continue;
       std::set<int> distinct;
       for (const Ref& ref : s.refs) distinct.insert(ref.vehicle);
       if ((pass == 0 && distinct.size() >= 2) || (pass >= 1 && !distinct.empty())) {
@@ -1218,8 +1235,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // Areas named with a vehicle: "the left rear of v2", "v2's right front",
     // "v1 on the right side", "with its front" (the striker's), "was struck
     // in the left side" (the struck vehicle's).
+    // "driver"/"passenger" name a side only with a part after them ("the
+    // driver's door"): "the driver of v1" is a person.
     static const string kArea =
-        R"(((?:(?:left|right|front|rear|back|driver'?s?|passenger)(?:[- ]|\s)*(?:hand\s+)?){1,3}(?:side|end|corner|quarter(?:\s+panel)?|bumper|door|fender|plane|panel|area|portion|wheel|tire|half)?s?))";
+        R"(((?:(?:left|right|front|rear|back)(?:[- ]|\s)*(?:hand\s+)?){1,3}(?:side|end|corner|quarter(?:\s+panel)?|bumper|door|fender|plane|panel|area|portion|wheel|tire|half)?s?|(?:driver|passenger)'?s?[- ]?(?:side|door|front|rear)(?:[- ]|\s)*(?:side|door|fender|corner|quarter(?:\s+panel)?)?s?))";
     static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+)?v([1-9])\b)");
     static const regex kVs(R"(\bv([1-9])'?s\s+)" + kArea);
     static const regex kVOn(R"(\bv([1-9])\s+(?:\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);

@@ -307,5 +307,43 @@ TEST(NarrativeExtractorTest, PreEventMovementRoundTripsThroughJson) {
   EXPECT_EQ(back.vehicles[0].movement.value, r.vehicles[0].movement.value);
 }
 
+TEST(NarrativeExtractorTest, TheDriverOfAVehicleIsNotItsLeftSide) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling east. V2 was traveling west. The driver of V1 tried to avoid V2 by steering right but the "
+      "front of V2 struck the front of V1.");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+  const auto door = kExtractor.Extract("V1 was traveling east. V2 struck V1 in the driver's door.");
+  EXPECT_EQ(door.crash.struck_area.value, DamageArea::kLeft);
+}
+
+TEST(NarrativeExtractorTest, CouldNotAvoidStrikingIsNotTheImpactSentence) {
+  const auto r = kExtractor.Extract(
+      "V1 was southbound. V2 was northbound. V1 drifted into the northbound lane. The driver of V2 steered right "
+      "but could not avoid striking V1. The front of V1 struck the front of V2 on the east shoulder.");
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+}
+
+TEST(NarrativeExtractorTest, AReportedSentenceThatNamesThePlanesIsTheImpact) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling west. V2 was also traveling west, ahead of V1. V3 was traveling east. The driver of V1 reported that "
+      "he steered to the left, but the right side of V1 struck the rear of V2. Then the front of V1 struck the "
+      "left side of V3.");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
+}
+
+TEST(NarrativeExtractorTest, WaitingToTurnThenEnteringTheRoadIsATurn) {
+  const auto r = kExtractor.Extract(
+      "V1 was stopped in a driveway, waiting to make a left turn onto the road. V2 was traveling north. V1 began "
+      "to enter the roadway with the intention of turning left, and the front of V2 struck the left side of V1.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
+}
+
 }  // namespace
 }  // namespace accsim
