@@ -418,10 +418,20 @@ struct MovementDecision {
   Provenance source = Provenance::kInferred;
 };
 
+// A vehicle described parked that then enters the road, turns or pulls
+// out was leaving its parking position, not a parked object.
+bool LeftParking(const MovementEvidence& n) {
+  return n.parked && (n.entered || n.turn_left || n.turn_right || n.merge || n.lane_change);
+}
+
 MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidence& st) {
   // Narrative statements first; driver statements only when the narrative is silent.
   const MovementEvidence& e = n.any_narrative() ? n : st;
   auto both = [](Movement m, Provenance p) { return MovementDecision{m, m, p}; };
+  if (LeftParking(n)) {
+    const Movement path = n.turn_left ? Movement::kTurnLeft : n.turn_right ? Movement::kTurnRight : Movement::kMerging;
+    return MovementDecision{path, Movement::kMerging, Provenance::kStated};
+  }
   if (e.parked || n.parked) return both(Movement::kStopped, Provenance::kStated);
   if (e.back || n.coded_back) return both(Movement::kBacking, Provenance::kStated);
   if (e.leaving_parking) return both(Movement::kMerging, Provenance::kStated);
@@ -467,7 +477,7 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
 // into path when one of them turned); an adjacent lane -> sideswipe same
 // direction; the opposite direction -> head-on or sideswipe by the damage.
 std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, bool lane_change, bool front_to_front) {
-  static const regex kNotInvolved(R"(\bnot involved (?:in )?(?:the )?first harmful)");
+  static const regex kNotInvolved(R"(\bnot involved (?:in )?(?:the )?1st harmful)");  // "first" is normalised to "1st"
   static const regex kIntoPath(R"(\bturning into (?:the )?(?:same|opposite|oppsite) direction)");
   static const regex kTurning(R"(\bturning (?:left|right) at (?:the |an )?intersection|\b(?:began|begin|started) to turn (?:left|right))");
   static const regex kTurningRight(R"(\bturning right at|\bbegan to turn right)");
@@ -490,15 +500,17 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
 
 // The usual U.S. posted limit of a road class the report names, for reports
 // that do not state one (CIREN's narratives never do): freeways 70 mph,
-// rural roads and highways 55, urban arterials 35, residential streets 25,
-// private roads and parking lots 15. Unnamed classes get none.
+// rural roads and highways 55, city streets (urban, downtown, one-way
+// streets) 30, residential streets 25, private roads and parking lots the
+// crash happened on 15. Unnamed classes get none.
 std::optional<double> TypicalLimitMph(const string& scene) {
-  static const std::array<std::pair<regex, double>, 6> kClasses = {{
+  static const std::array<std::pair<regex, double>, 7> kClasses = {{
       {regex(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b)"), 70.0},
-      {regex(R"(\b(?:parking (?:lot|area|garage)|private (?:road|drive))\b)"), 15.0},
+      {regex(R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)"), 15.0},
       {regex(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)"), 25.0},
       {regex(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)"), 55.0},
-      {regex(R"(\b(?:urban|city|downtown|business district|commercial)\b)"), 35.0},
+      {regex(R"(\b(?:urban|city|downtown|business district|commercial)\b)"), 30.0},
+      {regex(R"(\boneway (?:\w+ )?(?:road|roadway|street)\b)"), 30.0},
       {regex(R"(\bhighway\b)"), 55.0},
   }};
   for (const auto& [re, mph] : kClasses) {
@@ -858,7 +870,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   }
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
-    if (narrative[i + 1].parked || statement[i + 1].parked) v.parked.Set(true, Provenance::kStated);
+    if ((narrative[i + 1].parked || statement[i + 1].parked) && !LeftParking(narrative[i + 1])) {
+      v.parked.Set(true, Provenance::kStated);
+    }
     const MovementDecision d = DecideMovement(narrative[i + 1], statement[i + 1]);
     v.movement.Set(d.manoeuvre, d.source);
     v.pre_event.Set(d.pre_event, d.source);

@@ -345,5 +345,26 @@ TEST(NarrativeExtractorTest, WaitingToTurnThenEnteringTheRoadIsATurn) {
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
 }
 
+TEST(NarrativeExtractorTest, AParkedVehicleThatPullsOutIsATrafficUnit) {
+  const auto r = kExtractor.Extract(
+      "V1 was parked off the right side of the road. V2 was traveling north. V1 entered the roadway from the "
+      "right to make a U-turn. V2 struck V1 in the left side with its front.");
+  EXPECT_FALSE(r.vehicles[0].parked.value);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_NE(r.crash.type.value, CrashType::kSingleVehicle);
+  const auto parked = kExtractor.Extract(
+      "V1 was traveling north. V2 was parked and unoccupied on the shoulder. V1 struck the rear of V2.");
+  EXPECT_TRUE(parked.vehicles[1].parked.value);
+  EXPECT_EQ(parked.crash.type.value, CrashType::kSingleVehicle);
+}
+
+TEST(NarrativeExtractorTest, AVehicleNotInTheFirstHarmfulEventMakesItSingleVehicle) {
+  const auto r = kExtractor.Extract(
+      "V1 ran off the left side of the road and struck the trailer of V2 with its top. No critical precrash "
+      "event was coded to the driver of V2 because he was not involved in the first harmful event.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+}
+
 }  // namespace
 }  // namespace accsim
