@@ -355,7 +355,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
       R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn))");
   static const regex kLaneChange(
       R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|steered|swerved|veered|drifted|merged|pulled|crossed)\s+(?:\w+\s+){0,3}?into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
-  static const regex kMerge(R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from)");
+  static const regex kMerge(
+      R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
       R"((?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)back(?:ed|ing)\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
@@ -377,13 +378,16 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   }
   static const regex kEntered(
       R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b)");
-  const bool intention = Has(t, kIntention);
+  // A lane's name is not a manoeuvre: "in the two-way left turn lane".
+  static const regex kTurnLane(R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b)");
+  const string turns = std::regex_replace(t, kTurnLane, " lane ");
+  const bool intention = Has(turns, kIntention);
   if (!intention) {
-    if (Has(t, kLeft)) e.turn_left = true;
-    if (Has(t, kRight)) e.turn_right = true;
+    if (Has(turns, kLeft)) e.turn_left = true;
+    if (Has(turns, kRight)) e.turn_right = true;
   } else {
-    if (Has(t, kLeft)) e.intent_left = true;
-    if (Has(t, kRight)) e.intent_right = true;
+    if (Has(turns, kLeft)) e.intent_left = true;
+    if (Has(turns, kRight)) e.intent_right = true;
   }
   if (Has(t, kEntered)) e.entered = true;
   if (Has(t, kLaneChange)) e.lane_change = true;
@@ -748,8 +752,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kPerceivedBefore(R"(\b(?:saw|seen|see|seeing|observed|noticed|watched)\s*$)");
   static const regex kPerceivedState(
       R"(^\s+(?:was\s+)?(?:stopped|stationary|waiting|sitting|turning|making|pulling|backing|slowing|traveling|travelling|approaching|coming|entering|exiting|changing)\b)");
+  // Other road users end a vehicle's segment, with the state words in front
+  // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -823,7 +829,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const size_t vi = static_cast<size_t>(seg.vehicle);
     VehicleRecord& v = r.vehicles[vi - 1];
     const Kind kind = sentences[seg.sentence].kind;
-    const bool pre_impact = seg.sentence <= impact || impact == sentences.size();
+    // Told after the impact but in the past perfect ("v2 had stopped at the
+    // sign before initiating its turn"): still what happened before it.
+    static const regex kPastPerfect(R"(^\s*v[1-9]\b[^.]{0,80}?\bhad\s+(?:\w+\s+)?(?:been|stopped|slowed|turned|begun|started|come|pulled|entered)\b)");
+    const bool pre_impact = seg.sentence <= impact || impact == sentences.size() || Has(seg.text, kPastPerfect);
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
       if (!v.travel.known() && (kind == Kind::kNarrative || pre_impact)) {

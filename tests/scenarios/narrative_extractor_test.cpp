@@ -366,5 +366,34 @@ TEST(NarrativeExtractorTest, AVehicleNotInTheFirstHarmfulEventMakesItSingleVehic
   EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
 }
 
+TEST(NarrativeExtractorTest, ATurnLaneIsNotATurn) {
+  const auto r = kExtractor.Extract(
+      "V1 was stopped at the exit of a parking lot. V2 was traveling east in the two-way left turn lane. V1 pulled "
+      "out to turn left and the front of V1 struck the front of V2.");
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, PastPerfectAfterTheImpactStillDescribesBeforeIt) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling west when it struck the left side of V2. V2 had been southbound on the side road and had "
+      "stopped at the stop sign before it began its left turn.");
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
+}
+
+TEST(NarrativeExtractorTest, OthersStoppedTrafficIsNotThisVehiclesStop) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling north. V2 was traveling south. The driver of V1 recognized slowing or stopped traffic "
+      "ahead and swerved left. The front of V1 struck the front of V2.");
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, AVehicleOnAnEntranceRampIsMerging) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling on a one-way entrance ramp toward the right westbound lane of a freeway. V2 was traveling "
+      "west in the right lane. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kMerging);
+}
+
 }  // namespace
 }  // namespace accsim
