@@ -341,7 +341,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\bcame to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b)");
   static const regex kStopThenGo(
       R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went)\w*)");
-  static const regex kParked(R"(\bparked\b|\bunoccupied\b)");
+  static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
   static const regex kNoStop(
       R"(\b(?:failed to|did not|didn't|never|without)\s+(?:\w+\s+)?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
@@ -455,8 +455,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     MovementDecision d{left ? Movement::kTurnLeft : Movement::kTurnRight, Movement::kStraight, Provenance::kStated};
     d.pre_event = d.manoeuvre;
     const bool stopped = n.stopped || n.stop_cancelled || st.stopped || st.stop_cancelled;
-    if (n.rolled_stop || st.rolled_stop) d.pre_event = Movement::kSlowing;
-    else if (stopped && !n.no_stop && !st.no_stop) d.pre_event = Movement::kStopped;
+    // "did not stop before making the turn": slowed for it.
+    if (n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop) d.pre_event = Movement::kSlowing;
+    else if (stopped) d.pre_event = Movement::kStopped;
     return d;
   }
   // A stop before the critical event is the pre-crash movement even when a
