@@ -193,6 +193,7 @@ const char* kSchema = R"({
   "vehicles": [{"id": "V1", "class": "car|suv|pickup|van|truck|bus|motorcycle",
                 "travel": "north|south|east|west" or null,
                 "movement": "going_straight|turning_left|turning_right|changing_lanes|stopped|slowing|backing|passing|merging",
+                "pre_event_movement": <same values as movement>,
                 "speed": {"value": <number>, "unit": "mph|km/h"} or null}],
   "crash_type": "rear_end|head_on|angle|sideswipe_same_direction|sideswipe_opposite_direction|turn_across_path|turn_into_path|single_vehicle",
   "striking": "V1", "struck": "V2" or "object",
@@ -207,8 +208,8 @@ const char* kExample1 =
 const char* kAnswer1 =
     R"({"road_kind":"driveway","lanes_total":2,"lanes_per_direction":1,"divided":false,"one_way":false,)"
     R"("speed_limit":{"value":35,"unit":"mph"},"surface":null,"participant_count":2,"vehicles":[)"
-    R"({"id":"V1","class":"pickup","travel":"north","movement":"going_straight","speed":null},)"
-    R"({"id":"V2","class":"car","travel":"north","movement":"stopped","speed":null}],)"
+    R"({"id":"V1","class":"pickup","travel":"north","movement":"going_straight","pre_event_movement":"going_straight","speed":null},)"
+    R"({"id":"V2","class":"car","travel":"north","movement":"stopped","pre_event_movement":"stopped","speed":null}],)"
     R"("crash_type":"rear_end","striking":"V1","struck":"V2","striking_area":"front","struck_area":"rear","location":"driveway"})";
 const char* kExample2 =
     "Vehicle #1, a Jeep Cherokee, was traveling west and turned left at the four-leg intersection. Vehicle #2, a "
@@ -217,8 +218,8 @@ const char* kExample2 =
 const char* kAnswer2 =
     R"({"road_kind":"intersection","lanes_total":null,"lanes_per_direction":null,"divided":null,"one_way":null,)"
     R"("speed_limit":{"value":72,"unit":"km/h"},"surface":"wet","participant_count":2,"vehicles":[)"
-    R"({"id":"V1","class":"suv","travel":"west","movement":"turning_left","speed":null},)"
-    R"({"id":"V2","class":"car","travel":"east","movement":"going_straight","speed":{"value":40,"unit":"mph"}}],)"
+    R"({"id":"V1","class":"suv","travel":"west","movement":"turning_left","pre_event_movement":"turning_left","speed":null},)"
+    R"({"id":"V2","class":"car","travel":"east","movement":"going_straight","pre_event_movement":"going_straight","speed":{"value":40,"unit":"mph"}}],)"
     R"("crash_type":"turn_across_path","striking":"V2","struck":"V1","striking_area":"front","struck_area":"right","location":"junction"})";
 
 // Pulls the JSON object out of a model's reply (models like ```json fences).
@@ -284,8 +285,9 @@ nlohmann::json BuildLlmMessages(std::string_view narrative) {
       std::string("You read police and NHTSA crash narratives and answer with one JSON object only, no prose. ") +
       "Vehicles are V1, V2, ... in the order the report numbers them. Use null for anything the text does not say. "
       "Ignore injury, medical and interview details. lanes_total counts V1's road in both directions. "
-      "movement is what each vehicle was doing just before the crash (a vehicle stopped and waiting to turn is "
-      "stopped). Schema:\n" +
+      "movement is the manoeuvre each vehicle made into the crash (a vehicle that stopped at a sign and then "
+      "turned left is turning_left; one still stopped is stopped); pre_event_movement is what it did before the "
+      "critical event, as NASS codes it (that turning vehicle is stopped). Schema:\n" +
       kSchema;
   std::string text(narrative.substr(0, kMaxPromptChars));
   return nlohmann::json::array({{{"role", "system"}, {"content", system}},
@@ -382,6 +384,9 @@ int MergeLlmAnswer(const nlohmann::json& a, AccidentRecord& r) {
       });
       field("movement", [&](const nlohmann::json& x) {
         return Take(v.movement, MovementFromString(text(x)), p + ".movement", warn);
+      });
+      field("pre_event_movement", [&](const nlohmann::json& x) {
+        return Take(v.pre_event, MovementFromString(text(x)), p + ".pre_event_movement", warn);
       });
       field("speed", [&](const nlohmann::json& x) {
         std::string unit;

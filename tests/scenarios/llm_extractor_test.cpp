@@ -163,7 +163,7 @@ TEST(LlmExtractorTest, InvalidFieldsAreDroppedWithAWarningNamingThem) {
                                  {"surface", "lava"},
                                  {"speed_limit", {{"value", 50}, {"unit", "furlongs"}}},
                                  {"crash_type", "rear_end"},
-                                 {"vehicles", {{{"movement", "flying"}}}}};
+                                 {"vehicles", {{{"movement", "flying"}, {"pre_event_movement", "hovering"}}}}};
   EXPECT_EQ(MergeLlmAnswer(answer, r), 1);
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
   std::string all;
@@ -172,7 +172,17 @@ TEST(LlmExtractorTest, InvalidFieldsAreDroppedWithAWarningNamingThem) {
   EXPECT_NE(all.find("surface"), std::string::npos) << all;
   EXPECT_NE(all.find("speed_limit.unit"), std::string::npos) << all;
   EXPECT_NE(all.find("vehicles[0].movement"), std::string::npos) << all;
+  EXPECT_NE(all.find("vehicles[0].pre_event_movement"), std::string::npos) << all;
   EXPECT_EQ(r.road.lanes_total.source, Provenance::kDefaulted);
+}
+
+TEST(LlmExtractorTest, PreEventMovementFillsWhatTheRulesOnlyInferred) {
+  AccidentRecord r;
+  r.vehicles.resize(1);
+  r.vehicles[0].pre_event.Set(Movement::kStraight, Provenance::kInferred);
+  EXPECT_EQ(MergeLlmAnswer({{"vehicles", {{{"pre_event_movement", "stopped"}}}}}, r), 1);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[0].pre_event.source, Provenance::kInferred);
 }
 
 TEST(LlmExtractorTest, ServerFailuresFallBackToTheRules) {
