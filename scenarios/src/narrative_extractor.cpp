@@ -103,6 +103,61 @@ string Normalise(std::string_view in) {
   return s;
 }
 
+// Short descriptions number no vehicle ("a red sedan ran the light and
+// t-boned a white suv", "my car was stopped when a pickup rear-ended me").
+// The narrator's vehicle becomes v1 ("my car", "i", "me"), then each vehicle
+// introduced with "a"/"an"/"another" in order of first mention; a later "the
+// suv" refers back when only one vehicle has that noun. The noun phrases are
+// kept as the vehicles' descriptions.
+struct Numbered {
+  string text;
+  std::map<int, string> descriptions;
+};
+
+Numbered NameUnnumberedVehicles(const string& s) {
+  static const regex kAnyRef(R"(\bv[1-9]\b)");
+  if (Has(s, kAnyRef)) return {s, {}};
+  static const string kNoun =
+      R"((car|sedan|coupe|hatchback|wagon|suv|jeep|pickup(?: truck)?|truck|van|minivan|motorcycle|motorbike|bus|tractor-trailer|semi|taxi|cab|vehicle))";
+  // Group 1: the phrase without its article (noun included); group 2: the noun.
+  static const regex kMine(R"(\bmy\s+((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
+  static const regex kIntro(R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun + R"()\b)");
+  static const regex kFirstPerson(R"(\b(?:i|me)\b)");
+  Numbered out{s, {}};
+  std::map<string, int> owner;  // head noun -> vehicle, 0 when two share it
+  int next = 1;
+  auto head_of = [](const string& noun) { return noun.substr(0, noun.find(' ')); };
+  smatch m;
+  if (std::regex_search(out.text, m, kMine)) {
+    owner[head_of(m[2].str())] = 1;
+    out.descriptions[1] = m[1].str();
+    out.text = std::regex_replace(std::regex_replace(out.text, kMine, "v1"), kFirstPerson, "v1");
+    next = 2;
+  }
+  string rebuilt;
+  auto from = out.text.cbegin();
+  for (auto it = std::sregex_iterator(out.text.cbegin(), out.text.cend(), kIntro);
+       it != std::sregex_iterator() && next <= 9; ++it) {
+    const smatch& im = *it;
+    const string head = head_of(im[2].str());
+    if (head == "vehicle" && im.str().rfind("another", 0) != 0) continue;  // "a vehicle" is too vague to count
+    rebuilt.append(from, im[0].first);
+    rebuilt += "v" + std::to_string(next);
+    out.descriptions[next] = im[1].str();
+    owner[head] = owner.count(head) ? 0 : next;
+    ++next;
+    from = im[0].second;
+  }
+  rebuilt.append(from, out.text.cend());
+  for (const auto& [head, v] : owner) {
+    if (v == 0) continue;
+    const regex the(R"(\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + head + R"(\b)");
+    rebuilt = std::regex_replace(rebuilt, the, "v" + std::to_string(v));
+  }
+  out.text = std::move(rebuilt);
+  return out;
+}
+
 enum class Kind { kNarrative, kStatement, kCoding, kPeople };
 
 struct Ref {
@@ -141,7 +196,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -558,6 +613,13 @@ void ReconcileDirections(AccidentRecord& r, size_t ia, size_t ib) {
   travel.Set(fixed, Provenance::kInferred);
 }
 
+// "ran the stop sign", "went through a red light": a controlled junction.
+bool RanTrafficControl(const string& t) {
+  static const regex kRan(
+      R"(\b(?:ran|run|running|blew|went through|drove through|failed to stop (?:at|for)|disregarded)\s+(?:the|a)\s+(?:stop sign|red light|red signal|traffic (?:light|signal)|signal|light)\b)");
+  return Has(t, kRan);
+}
+
 bool Turning(Movement m) { return m == Movement::kTurnLeft || m == Movement::kTurnRight; }
 
 }  // namespace
@@ -568,7 +630,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     r.warnings.push_back("text: longer than " + std::to_string(kMaxBytes) + " bytes; only the start was read");
     text = text.substr(0, kMaxBytes);
   }
-  const string norm = Normalise(text);
+  const Numbered numbered = NameUnnumberedVehicles(Normalise(text));
+  const string& norm = numbered.text;
   std::vector<Sentence> sentences;
   for (string& t : SplitSentences(norm)) sentences.push_back({std::move(t), Kind::kNarrative, {}, 0});
   if (sentences.empty()) {
@@ -580,7 +643,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kDesc(
       R"(^v([1-9])\s*(?:,\s*|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
   static const regex kBody(R"(^\s*,\s*([a-z0-9][a-z0-9 -]{1,40}?)\s+(?:was|that|which|were)\b)");
-  std::map<int, string> descriptions, bodies;
+  std::map<int, string> descriptions = numbered.descriptions, bodies;
   for (const Sentence& s : sentences) {
     for (const Ref& ref : RefsIn(s.text)) {
       if (descriptions.count(ref.vehicle)) continue;
@@ -743,7 +806,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     bool perceived = false;  // what another driver saw this vehicle do
   };
   static const regex kSubjectBefore(
-      R"((?:^|[,:(]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
+      R"((?:^|[,:(.]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
   // "behind v2, a jetta, which was stopped", and appositives "v2, a parked
   // and unoccupied ciera": both describe that vehicle.
   static const regex kRelativeAfter(
@@ -783,7 +846,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // another road user from its first word.
     auto cut = [&](size_t from, size_t to) {
       string t = s.text.substr(from, to - from);
-      const size_t skip = from == 0 && (starts.empty() || starts.front().pos > 0) ? 0 : std::min<size_t>(t.size(), 3);
+      size_t skip = from == 0 && (starts.empty() || starts.front().pos > 0) ? 0 : std::min<size_t>(t.size(), 3);
+      // The segment's own description ("v2, a pickup truck, was ...") is not
+      // another road user.
+      static const regex kOwnAppositive(R"(^v[1-9]\s*,\s*an?\s+[^,;]{0,60},)");
+      smatch own;
+      if (skip > 0 && std::regex_search(t, own, kOwnAppositive)) skip = static_cast<size_t>(own.length(0));
       smatch m;
       if (std::regex_search(t.cbegin() + static_cast<std::ptrdiff_t>(skip), t.cend(), m, kOtherVehicle)) {
         t = t.substr(0, static_cast<size_t>(m.position()) + skip);
@@ -1265,7 +1333,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         R"(((?:(?:left|right|front|rear|back)(?:[- ]|\s)*(?:hand\s+)?){1,3}(?:side|end|corner|quarter(?:\s+panel)?|bumper|door|fender|plane|panel|area|portion|wheel|tire|half)?s?|(?:driver|passenger)'?s?[- ]?(?:side|door|front|rear)(?:[- ]|\s)*(?:side|door|fender|corner|quarter(?:\s+panel)?)?s?))";
     static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+)?v([1-9])\b)");
     static const regex kVs(R"(\bv([1-9])'?s\s+)" + kArea);
-    static const regex kVOn(R"(\bv([1-9])\s+(?:\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
+    static const regex kVOn(R"(\bv([1-9])\s+(?:(?!v[1-9]\b)\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
     static const regex kWithIts(R"(\b(?:with|using)\s+(?:its|it's|the|his|her|their)\s+)" + kArea);
     static const regex kStruckIn(
         R"(\b(?:contacted|struck|impacted|hit|stuck)\s+(?:\w+\s+){0,3}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
@@ -1383,14 +1451,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     // Front corners count as fronts here: investigators code "the front left
     // of v2 with its front left" as a head-on.
+    static const regex kRearEndWord(R"(\brear[- ]end)");
+    static const regex kHeadOnWord(R"(\bhead[- ]on\b)");
+    static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
     const bool front_to_front = sa.front && (sb.front || !sb.any());
     if (const auto from_coding =
             CrashTypeFromCoding(coded, turner != nullptr, Has(impact_text, kLaneChangeNow), front_to_front)) {
       type = *from_coding;
       type_src = Provenance::kStated;
-    } else if (Has(impact_text, regex(R"(\brear[- ]end)"))) {
+    } else if (Has(impact_text, kRearEndWord)) {
       type = CrashType::kRearEnd;
-    } else if (Has(impact_text, regex(R"(\bhead[- ]on\b)"))) {
+    } else if (Has(impact_text, kHeadOnWord)) {
       type = CrashType::kHeadOn;
     } else if (struck_plain_rear && sa.front && !opposite && !lane_change_at_impact) {
       type = CrashType::kRearEnd;
@@ -1400,6 +1471,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (into_path_coded || turner_from_side) type = CrashType::kTurnIntoPath;
       else if (perpendicular) type = CrashType::kTurnIntoPath;
       else type = CrashType::kTurnAcrossPath;
+    } else if (Has(impact_text, kBroadside)) {
+      type = CrashType::kAngle;  // "t-boned", "broadsided": a front into a side, paths crossing
     } else if (rear_end_coded && !opposite && !perpendicular) {
       type = CrashType::kRearEnd;
     } else if (opposite || (opposite_coded && !dirs)) {
@@ -1415,7 +1488,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else if (sa.front && sb.front) {
       type = CrashType::kHeadOn;
     } else if (sb.left || sb.right) {
-      type = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction
+      type = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction ||
+                     RanTrafficControl(scene)
                  ? CrashType::kAngle
                  : CrashType::kSideswipeSame;
     } else {
@@ -1502,7 +1576,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     });
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
-    } else if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection)) {
+    } else if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);

@@ -395,5 +395,50 @@ TEST(NarrativeExtractorTest, AVehicleOnAnEntranceRampIsMerging) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kMerging);
 }
 
+TEST(NarrativeExtractorTest, ShortDescriptionsWithoutVehicleNumbers) {
+  const auto tbone = kExtractor.Extract(
+      "A red sedan ran a red light and T-boned a white SUV that was crossing the intersection. The sedan was "
+      "going about 40 mph.");
+  ASSERT_EQ(tbone.participant_count.value, 2);
+  EXPECT_EQ(tbone.vehicles[1].vehicle_class.value, VehicleClass::kSuv);
+  EXPECT_NEAR(tbone.vehicles[0].speed_mps.value, 40 * 0.44704, 1e-9);  // "the sedan" is V1
+  EXPECT_EQ(tbone.crash.striking.value, "V1");
+  EXPECT_EQ(tbone.crash.type.value, CrashType::kAngle);
+  EXPECT_EQ(tbone.crash.location.value, CrashLocation::kJunction);
+
+  const auto mine = kExtractor.Extract(
+      "My car was stopped at a red light when a pickup truck rear-ended me at around 30 km/h.");
+  ASSERT_EQ(mine.participant_count.value, 2);
+  EXPECT_EQ(mine.vehicles[0].movement.value, Movement::kStopped);
+  EXPECT_EQ(mine.vehicles[1].vehicle_class.value, VehicleClass::kPickup);
+  EXPECT_NEAR(mine.vehicles[1].speed_mps.value * 3.6, 30.0, 1e-9);
+  EXPECT_EQ(mine.crash.striking.value, "V2");
+  EXPECT_EQ(mine.crash.type.value, CrashType::kRearEnd);
+
+  const auto side = kExtractor.Extract(
+      "I was driving north on Elm Street when a van ran the stop sign and hit my car on the driver side.");
+  EXPECT_EQ(side.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(side.crash.struck.value, "V1");
+  EXPECT_EQ(side.crash.struck_area.value, DamageArea::kLeft);
+  EXPECT_EQ(side.crash.location.value, CrashLocation::kJunction);
+}
+
+TEST(NarrativeExtractorTest, AnAreaBelongsToTheNearestVehicle) {
+  const auto r = kExtractor.Extract("V1 was driving north. V2 hit V1 on the left side.");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+}
+
+TEST(NarrativeExtractorTest, AStreetAbbreviationDoesNotJoinTwoVehiclesSentences) {
+  const auto r = kExtractor.Extract(
+      "Unit 1 was westbound on Main St. Unit 2 was eastbound and turned left in front of Unit 1 at the "
+      "intersection with 5th Ave. Unit 1 struck Unit 2 on the passenger side.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 }  // namespace
 }  // namespace accsim
