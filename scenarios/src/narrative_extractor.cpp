@@ -513,6 +513,10 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     // "did not stop before making the turn": slowed for it.
     if (n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop) d.pre_event = Movement::kSlowing;
     else if (stopped) d.pre_event = Movement::kStopped;
+    else if (n.slowing) d.pre_event = Movement::kSlowing;
+    // When the turn is itself the critical event ("this vehicle turning left
+    // at intersection"), what the vehicle did before it was driving on.
+    else if (n.coded_turn_left || n.coded_turn_right) d.pre_event = Movement::kStraight;
     return d;
   }
   // A stop before the critical event is the pre-crash movement even when a

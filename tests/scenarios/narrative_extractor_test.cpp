@@ -440,5 +440,18 @@ TEST(NarrativeExtractorTest, AStreetAbbreviationDoesNotJoinTwoVehiclesSentences)
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, ATurnThatIsTheCriticalEventWasPrecededByDrivingOn) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling east and turned left at the intersection. V2 was traveling west. The front of V2 struck "
+      "the right side of V1. The critical precrash event for V1 was this vehicle traveling, turning left at "
+      "intersection.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  const auto uncoded = kExtractor.Extract(
+      "V1 was traveling east and turned left at the intersection. V2 was traveling west. The front of V2 struck "
+      "the right side of V1.");
+  EXPECT_EQ(uncoded.vehicles[0].pre_event.value, Movement::kTurnLeft);
+}
+
 }  // namespace
 }  // namespace accsim
