@@ -424,7 +424,10 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   if (Has(t, kLeavingParking)) e.leaving_parking = true;
   if (Has(t, kRolledStop)) e.rolled_stop = true;
   if (Has(t, kNoStop)) e.no_stop = true;
-  if (Has(t, kStopState) && !parked && !Has(t, kNoStop)) {
+  // A stop made on seeing the other vehicle is the avoidance, after the
+  // critical event: "when he saw the other car coming, he stopped".
+  static const regex kAvoidanceStop(R"(\b(?:saw|seeing|noticed|observed|spotted)\b[^.]{0,80}?\b(?:stopped|braked to a stop)\b)");
+  if (Has(t, kStopState) && !parked && !Has(t, kNoStop) && !Has(t, kAvoidanceStop)) {
     if (Has(t, kStopThenGo)) {
       e.stop_cancelled = true;
     } else {
@@ -526,7 +529,7 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   if (e.merge) return both(Movement::kMerging, Provenance::kStated);
   if (e.pass) return both(Movement::kPassing, Provenance::kStated);
   if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
-  if (e.slowing || n.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
+  if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
   if (e.straight || n.coded_straight || e.stop_cancelled) return both(Movement::kStraight, Provenance::kStated);
   return both(Movement::kStraight, Provenance::kInferred);
 }

@@ -453,5 +453,15 @@ TEST(NarrativeExtractorTest, ATurnThatIsTheCriticalEventWasPrecededByDrivingOn) 
   EXPECT_EQ(uncoded.vehicles[0].pre_event.value, Movement::kTurnLeft);
 }
 
+TEST(NarrativeExtractorTest, AStopOnSeeingTheOtherIsTheAvoidanceNotThePreEvent) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling north around the bend. V1 saw V2 coming over the center line and stopped. The front of "
+      "V2 struck the left side of V1.");
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  const auto waited = kExtractor.Extract(
+      "V1 was stopped in the northbound lane waiting for traffic. The front of V2 struck the rear of V1.");
+  EXPECT_EQ(waited.vehicles[0].pre_event.value, Movement::kStopped);
+}
+
 }  // namespace
 }  // namespace accsim
