@@ -35,6 +35,11 @@ bool HasLeft(ImpactArea a) { return a == ImpactArea::kLeft || a == ImpactArea::k
 bool HasRight(ImpactArea a) {
   return a == ImpactArea::kRight || a == ImpactArea::kFrontRight || a == ImpactArea::kRearRight;
 }
+// The heading of a path near s (smoothed over a metre, as the references use).
+double HeadingNear(const Polyline& p, double s) {
+  const Vec2 d = p.PointAt(s + 0.5) - p.PointAt(s - 0.5);
+  return d.norm() < 1e-6 ? p.HeadingAt(s) : std::atan2(d.y(), d.x());
+}
 bool Turning(Manoeuvre m) { return m == Manoeuvre::kTurnLeft || m == Manoeuvre::kTurnRight; }
 bool JunctionType(CrashType t) {
   return t == CrashType::kAngle || t == CrashType::kTurnAcrossPath || t == CrashType::kTurnIntoPath;
@@ -249,6 +254,121 @@ Polyline DubinsLaneChange(double y_from, double y_to, double x_from, double r) {
   return Polyline(pts);
 }
 
+// A sideswipe as investigators code it: a vehicle leaving its lane (the
+// changer) touches the other (the keeper) with the front corner on the side
+// it moves to, on the keeper's side; or, when it pulls out from behind the
+// keeper and the keeper was hit on its back, with the other front corner on
+// the keeper's back beside the corner.
+struct Party {
+  VehicleClass cls;
+  ImpactArea area;  // as described
+  Manoeuvre movement;
+  double radius;    // [m] Dubins radius at its speed
+};
+
+double LaneY(const RoadMap& map, Compass travel, int index) {
+  const int id = map.FindLane(travel, false, index);
+  if (id < 0) throw std::invalid_argument("road: no such lane");
+  return map.lane(id).centreline.PointAt(0.0).y();
+}
+
+// Puts the changer where its front corner (side +1 left, -1 right) reaches
+// the lateral position of `target` (a point in the keeper's frame, keeper
+// heading `keeper_yaw`), and the keeper so that the target is there.
+void MeetAtFrontCorner(VehiclePath& changer, VehiclePath& keeper, VehicleClass cls, int side, double keeper_yaw,
+                       const Vec2& target) {
+  const Vec2 offset(std::cos(keeper_yaw) * target.x() - std::sin(keeper_yaw) * target.y(),
+                    std::sin(keeper_yaw) * target.x() + std::cos(keeper_yaw) * target.y());
+  const double y = keeper.path.PointAt(0.0).y() + offset.y();
+  const Polyline& p = changer.path;
+  double previous = 0.0;
+  for (double s = 0.0; s <= p.length(); s += 0.02) {
+    const double h = HeadingNear(p, s);
+    const Vec2 u(std::cos(h), std::sin(h)), left(-u.y(), u.x());
+    const Vec2 corner = p.PointAt(s) + HalfLength(cls) * u + side * HalfWidth(cls) * left;
+    const double gap = corner.y() - y;
+    if (s > 0.0 && (gap > 0.0) != (previous > 0.0)) {
+      changer.impact_s = s;
+      keeper.impact_s = keeper.path.Project(corner - offset).s;
+      return;
+    }
+    previous = gap;
+  }
+  throw std::invalid_argument("road: the lane change never brings its front corner to the other vehicle");
+}
+
+// Whether a described area allows the changer to strike with its front
+// corner on `side`.
+bool CornerFits(ImpactArea area, int side) {
+  if (area == ImpactArea::kRear) return false;
+  return side > 0 ? !HasRight(area) : !HasLeft(area);
+}
+
+// Where along the keeper's side the corner lands: towards the named corner,
+// else the middle (the rear half with `rearward`).
+double AlongSide(ImpactArea keeper_area, double half_length, bool rearward) {
+  if (IsFront(keeper_area)) return 0.5 * half_length;
+  if (keeper_area == ImpactArea::kRearLeft || keeper_area == ImpactArea::kRearRight || rearward) {
+    return -0.5 * half_length;
+  }
+  return 0.0;
+}
+
+// Same direction, eastbound on a road with two lanes at least.
+std::pair<VehiclePath, VehiclePath> SameDirectionCorner(const RoadMap& map, const Party& changer, const Party& keeper,
+                                                        bool rearward) {
+  const double w = map.spec().lane_width;
+  const double x_from = -20.0 - 2.4 * std::sqrt(changer.radius * w);
+  if (keeper.area == ImpactArea::kRear) {
+    // Pulling out from behind: towards the side its damaged side trails.
+    const int dir = HasRight(changer.area) ? 1 : HasLeft(changer.area) ? -1
+                    : changer.movement == Manoeuvre::kLaneChangeRight ? -1 : 1;
+    const int lane = dir > 0 ? 1 : 0, to = dir > 0 ? 0 : 1;
+    VehiclePath k{map.lane(map.FindLane(Compass::kEast, false, lane)).centreline, 0.0,
+                  "east lane " + std::to_string(lane) + " keeps its lane", false};
+    VehiclePath c{DubinsLaneChange(LaneY(map, Compass::kEast, lane), LaneY(map, Compass::kEast, to), x_from,
+                                   changer.radius),
+                  0.0, "east lane " + std::to_string(lane) + " pulling out " + (dir > 0 ? "left" : "right") +
+                           " from behind, front corner first", true};
+    const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
+    MeetAtFrontCorner(c, k, changer.cls, -dir, 0.0, Vec2(-hl, dir * (hw - 0.3)));
+    return {c, k};
+  }
+  // Into the keeper's lane from the side its damage names.
+  const bool on_left = HasLeft(keeper.area) || (!HasRight(keeper.area) && (HasRight(changer.area) ||
+                                                (!HasLeft(changer.area) &&
+                                                 changer.movement == Manoeuvre::kLaneChangeRight)));
+  const int side = on_left ? -1 : 1;
+  if (!CornerFits(changer.area, side)) throw std::invalid_argument("road: the damaged areas rule out a corner contact");
+  const int lane = on_left ? 0 : 1, to = on_left ? 1 : 0;
+  VehiclePath k{map.lane(map.FindLane(Compass::kEast, false, to)).centreline, 0.0,
+                "east lane " + std::to_string(to) + " keeps its lane", false};
+  VehiclePath c{DubinsLaneChange(LaneY(map, Compass::kEast, lane), LaneY(map, Compass::kEast, to), x_from,
+                                 changer.radius),
+                0.0, "east lane " + std::to_string(lane) + " changing lanes " + (on_left ? "right" : "left") +
+                         ", front corner first", true};
+  const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
+  MeetAtFrontCorner(c, k, changer.cls, side, 0.0, Vec2(AlongSide(keeper.area, hl, rearward), on_left ? hw : -hw));
+  return {c, k};
+}
+
+// Opposite directions: the changer drifts over the centre line and its
+// front-left corner meets the oncoming keeper's left side.
+std::pair<VehiclePath, VehiclePath> OppositeDirectionCorner(const RoadMap& map, const Party& changer,
+                                                            const Party& keeper, bool rearward) {
+  if (!CornerFits(changer.area, 1) || HasRight(keeper.area) || keeper.area == ImpactArea::kRear) {
+    throw std::invalid_argument("road: the damaged areas rule out a corner contact");
+  }
+  const double w = map.spec().lane_width;
+  VehiclePath k{map.lane(map.FindLane(Compass::kWest, false, 0)).centreline, 0.0, "west lane 0 keeps its lane", false};
+  VehiclePath c{DubinsLaneChange(LaneY(map, Compass::kEast, 0), LaneY(map, Compass::kWest, 0),
+                                 -30.0 - 2.4 * std::sqrt(changer.radius * w), changer.radius),
+                0.0, "east lane 0 drifting over the centre line, front corner first", true};
+  const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
+  MeetAtFrontCorner(c, k, changer.cls, 1, kPi, Vec2(AlongSide(keeper.area, hl, rearward), hw));
+  return {c, k};
+}
+
 double Meet(const Polyline& p, const Polyline& q) {
   for (double s = 0; s <= p.length(); s += 0.05) {
     if (q.Project(p.PointAt(s)).distance < 0.05) return s;
@@ -259,7 +379,7 @@ double Meet(const Polyline& p, const Polyline& q) {
 std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashType type, const PlannerConfig& config,
                                           int variant) {
   const CrashDescription& d = c.description;
-  const bool flip = variant & 1, swap_turner = variant & 2;
+  const bool flip = variant & 1, swap_turner = variant & 2, corner = variant & 4;
   const auto& A = d.vehicles[static_cast<size_t>(c.striker)];
   const auto& B = d.vehicles[static_cast<size_t>(c.struck)];
   const VehicleClass ca = A.vehicle_class.value, cb = B.vehicle_class.value;
@@ -307,6 +427,19 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
     return {map.lane(id).centreline, 0.0, label(travel, index, "keeps its lane"), false};
   };
   VehiclePath pa, pb;
+  // A sideswipe's front-corner contact: the struck vehicle is the changer
+  // with bit 1, the corner lands towards the keeper's rear with bit 0.
+  const auto corner_contact = [&] {
+    const double vb = c.impact_speed[static_cast<size_t>(c.struck)];
+    const Party striker{ca, c.striker_area, A.movement.value, radius};
+    const Party struck{cb, c.struck_area, B.movement.value, std::max(config.min_turn_radius, vb * vb / lim.lateral)};
+    const Party& changer = swap_turner ? struck : striker;
+    const Party& keeper = swap_turner ? striker : struck;
+    auto [pc, pk] = type == CrashType::kSideswipeSame ? SameDirectionCorner(map, changer, keeper, flip)
+                                                      : OppositeDirectionCorner(map, changer, keeper, flip);
+    pa = swap_turner ? pk : pc;
+    pb = swap_turner ? pc : pk;
+  };
   switch (type) {
     case CrashType::kRearEnd: {
       const int lane = B.lane.value ? std::min(*B.lane.value, kerb) : A.lane.value ? std::min(*A.lane.value, kerb) : 0;
@@ -317,6 +450,10 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
     }
     case CrashType::kHeadOn:
     case CrashType::kSideswipeOpposite: {
+      if (corner) {
+        corner_contact();
+        break;
+      }
       // The striker drifts over the centre line into the oncoming lane.
       pb = road_lane(Compass::kWest, 0);
       const double overlap = type == CrashType::kHeadOn ? 0.0 : HalfWidth(ca) + HalfWidth(cb) - 0.4;
@@ -328,6 +465,10 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
       break;
     }
     case CrashType::kSideswipeSame: {
+      if (corner) {
+        corner_contact();
+        break;
+      }
       // One vehicle moves into the other's lane from the side the damage
       // names (a struck left side or a striking right side: the striker is
       // on the struck vehicle's left); without damage, from the side its
@@ -433,6 +574,22 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
   return out;
 }
 
+bool ChangesLanes(Manoeuvre m) {
+  return m == Manoeuvre::kLaneChangeLeft || m == Manoeuvre::kLaneChangeRight || m == Manoeuvre::kMerging;
+}
+
+// Variants of a type's combinations, in the order they are tried: the other
+// vehicle's direction or the striker further forward (bit 0), which vehicle
+// turns, pulls out or changes lanes (bit 1), a sideswipe's front-corner
+// contact (bit 2). The described lane changer first.
+std::vector<int> Variants(CrashType type, Manoeuvre striker, Manoeuvre struck) {
+  if (JunctionType(type)) return {0, 1, 2, 3};
+  if (type == CrashType::kSideswipeOpposite) return {0, 4, 5, 6, 7};
+  if (type != CrashType::kSideswipeSame) return {0};
+  if (ChangesLanes(struck) && !ChangesLanes(striker)) return {2, 3, 0, 1, 6, 7, 4, 5};
+  return {0, 1, 2, 3, 4, 5, 6, 7};
+}
+
 }  // namespace
 
 std::vector<LaneCombination> GatherLaneCombinations(const ImpactConfiguration& c, const PlannerConfig& config) {
@@ -450,18 +607,9 @@ std::vector<LaneCombination> GatherLaneCombinations(const ImpactConfiguration& c
     types.push_back(by_areas);
   }
   for (const CrashType type : types) {
-    // Variants: the other vehicle's direction or the striker further
-    // forward (bit 0), which vehicle turns, pulls out or changes lanes (bit 1).
-    const bool has_choices = JunctionType(type) || type == CrashType::kSideswipeSame;
-    std::vector<int> order{0, 1, 2, 3};
     const Manoeuvre mb = d.vehicles[static_cast<size_t>(c.struck)].movement.value;
     const Manoeuvre ma = d.vehicles[static_cast<size_t>(c.striker)].movement.value;
-    const auto changes = [](Manoeuvre m) {
-      return m == Manoeuvre::kLaneChangeLeft || m == Manoeuvre::kLaneChangeRight || m == Manoeuvre::kMerging;
-    };
-    if (type == CrashType::kSideswipeSame && changes(mb) && !changes(ma)) order = {2, 3, 0, 1};
-    for (const int v : order) {
-      if (v > 0 && !has_choices) break;
+    for (const int v : Variants(type, ma, mb)) {
       try {
         for (auto& k : Combinations(c, type, config, v)) all.push_back(std::move(k));
       } catch (const std::invalid_argument& e) {
@@ -503,10 +651,6 @@ struct SpeedProfile {
   double PeakJerk() const { return 6.0 * std::abs(v1 - v0) / (tau * tau); }
 };
 
-double HeadingNear(const Polyline& p, double s) {
-  const Vec2 d = p.PointAt(s + 0.5) - p.PointAt(s - 0.5);
-  return d.norm() < 1e-6 ? p.HeadingAt(s) : std::atan2(d.y(), d.x());
-}
 double CurvatureAt(const Polyline& p, double s) {
   return std::abs(WrapAngle(HeadingNear(p, s + 1.0) - HeadingNear(p, s - 1.0))) / 2.0;
 }

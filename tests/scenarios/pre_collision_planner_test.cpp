@@ -96,6 +96,39 @@ TEST(PreCollisionPlannerTest, Phase2KeepsLanesCompatibleWithTheManoeuvres) {
   EXPECT_GE(ss.front().map.lanes_per_direction, 2);
 }
 
+// The combinations whose label contains `what`, planned.
+std::vector<PlannedCrash> PlansWith(const CrashDescription& d, const std::string& what) {
+  const ImpactConfiguration c = ResolveImpact(d, 0);
+  std::vector<PlannedCrash> out;
+  for (const LaneCombination& k : GatherLaneCombinations(c)) {
+    if (k.label.find(what) != std::string::npos && k.striker_shift == 0.0) out.push_back(TimeParameterise(c, k));
+  }
+  return out;
+}
+
+TEST(PreCollisionPlannerTest, Phase2SideswipesMeetWithTheFrontCorner) {
+  // V1 swerves left round V2 ahead and clips V2's back with its right front
+  // corner (coded a sideswipe, CIREN 105203).
+  auto pull_out = Two(CrashType::kSideswipeSame, RoadType::kStraight, ImpactArea::kRight, ImpactArea::kRear);
+  const auto out = PlansWith(pull_out, "pulling out left from behind, front corner first");
+  ASSERT_FALSE(out.empty());
+  // The corner touches at the planned time, with V1 already in the left lane's direction.
+  EXPECT_NEAR(out.front().state.time, PlannerConfig{}.impact_time, 0.05);
+  EXPECT_GT(out.front().state.bodies[0].pose.yaw, 0.0);
+
+  // A lane changer's front corner on the other's side, from the side the damage names.
+  auto into = Two(CrashType::kSideswipeSame, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kLeft);
+  const auto in = PlansWith(into, "changing lanes right, front corner first");
+  ASSERT_FALSE(in.empty());
+  EXPECT_NEAR(in.front().state.time, PlannerConfig{}.impact_time, 0.05);
+  EXPECT_LT(in.front().state.bodies[0].pose.yaw, 0.0);
+
+  // The damaged areas rule the corner out: a struck right side cannot meet a
+  // changer coming from its left.
+  auto wrong = Two(CrashType::kSideswipeSame, RoadType::kStraight, ImpactArea::kRight, ImpactArea::kRight);
+  EXPECT_TRUE(PlansWith(wrong, "front corner first").empty());
+}
+
 TEST(PreCollisionPlannerTest, Phase3MeetsAtThePlannedTimeWithinLimits) {
   const PlannerConfig cfg;
   for (const CrashType t : {CrashType::kRearEnd, CrashType::kHeadOn, CrashType::kAngle}) {

@@ -52,6 +52,28 @@ TEST(ReconstructionTest, EveryTwoVehicleCrashTypeReconstructsOnEveryRoad) {
   }
 }
 
+TEST(ReconstructionTest, SideswipesMeetWithTheLaneChangersFrontCorner) {
+  struct Case {
+    CrashType type;
+    ImpactArea a, b;
+    Manoeuvre ma, mb;
+  };
+  // Investigators code a lane changer's front corner against the other's
+  // side (or, pulling out from behind, against its back) as a sideswipe.
+  const Case cases[] = {
+      {CrashType::kSideswipeSame, ImpactArea::kFront, ImpactArea::kLeft, Manoeuvre::kLaneChangeRight, Manoeuvre::kStraight},
+      {CrashType::kSideswipeSame, ImpactArea::kFrontLeft, ImpactArea::kRight, Manoeuvre::kLaneChangeLeft, Manoeuvre::kStraight},
+      {CrashType::kSideswipeSame, ImpactArea::kLeft, ImpactArea::kRight, Manoeuvre::kStraight, Manoeuvre::kStopped},
+      {CrashType::kSideswipeSame, ImpactArea::kRight, ImpactArea::kRear, Manoeuvre::kStraight, Manoeuvre::kStraight},
+      {CrashType::kSideswipeOpposite, ImpactArea::kFrontLeft, ImpactArea::kLeft, Manoeuvre::kStraight, Manoeuvre::kStraight},
+  };
+  for (const Case& k : cases) {
+    const Reconstruction r = Reconstruct(Two(k.type, RoadType::kStraight, k.a, k.b, k.ma, k.mb));
+    EXPECT_TRUE(r.check.success) << ToString(k.type) << " " << ToString(k.a) << "/" << ToString(k.b) << ": "
+                                 << r.check.reason << " [" << r.plan.combination << "]";
+  }
+}
+
 TEST(ReconstructionTest, SavedScenarioChecksAgain) {
   const Reconstruction r = Reconstruct(Two(CrashType::kAngle, RoadType::kTJunction, ImpactArea::kFront,
                                            ImpactArea::kLeft, Manoeuvre::kStraight, Manoeuvre::kStraight));
