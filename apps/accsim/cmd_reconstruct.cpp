@@ -125,7 +125,7 @@ void AddReconstructCommands(CLI::App& app) {
       std::printf("  %-14s %6.2f%%  (%d of %d)\n", road.c_str(), 100.0 * r.Rate(road), ok, n);
     }
     for (const auto& [road, n] : r.single_vehicle) {
-      std::printf("  %-14s %d single-vehicle crash(es) not reconstructed\n", road.c_str(), n);
+      std::printf("  %-14s %d single-vehicle crash(es) among them, against a stationary obstacle\n", road.c_str(), n);
     }
     if (e->verbose || r.failures.size() <= 10) {
       for (const auto& f : r.failures) std::printf("  %s\n", f.c_str());

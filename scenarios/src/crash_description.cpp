@@ -35,6 +35,20 @@ constexpr std::array<std::pair<ImpactArea, std::string_view>, 9> kAreas{{
     {ImpactArea::kUnknown, "unknown"},
 }};
 
+constexpr std::array<std::pair<ObstaclePlace, std::string_view>, 3> kPlaces{{
+    {ObstaclePlace::kInLane, "in_lane"},
+    {ObstaclePlace::kLeftRoadside, "left_roadside"},
+    {ObstaclePlace::kRightRoadside, "right_roadside"},
+}};
+
+template <typename E, size_t N>
+std::string_view Name(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
+  for (const auto& [e, name] : table) {
+    if (e == value) return name;
+  }
+  return "unknown";
+}
+
 template <typename E, size_t N>
 E Parse(const std::array<std::pair<E, std::string_view>, N>& table, std::string_view s, const char* what) {
   std::string names;
@@ -87,20 +101,12 @@ void Read(const nlohmann::json& j, const char* key, const std::string& path, Fie
 
 }  // namespace
 
-std::string_view ToString(Manoeuvre m) {
-  for (const auto& [e, name] : kManoeuvres) {
-    if (e == m) return name;
-  }
-  return "unknown";
-}
-std::string_view ToString(ImpactArea a) {
-  for (const auto& [e, name] : kAreas) {
-    if (e == a) return name;
-  }
-  return "unknown";
-}
+std::string_view ToString(Manoeuvre m) { return Name(kManoeuvres, m); }
+std::string_view ToString(ImpactArea a) { return Name(kAreas, a); }
+std::string_view ToString(ObstaclePlace p) { return Name(kPlaces, p); }
 Manoeuvre ManoeuvreFromString(std::string_view s) { return Parse(kManoeuvres, s, "movement"); }
 ImpactArea ImpactAreaFromString(std::string_view s) { return Parse(kAreas, s, "impact_area"); }
+ObstaclePlace ObstaclePlaceFromString(std::string_view s) { return Parse(kPlaces, s, "obstacle"); }
 
 bool AreaIncludes(ImpactArea area, ImpactArea face) {
   if (area == ImpactArea::kUnknown || area == face) return true;
@@ -139,6 +145,12 @@ int CrashDescription::IndexOf(const std::string& id) const {
   return -1;
 }
 
+bool CrashDescription::SingleVehicle() const {
+  if (vehicles.size() == 1 || (struck.known() && struck.value == kObjectId)) return true;
+  const bool pair_named = striker.known() && struck.known() && IndexOf(struck.value) >= 0;
+  return type.value == CrashType::kSingleVehicle && type.known() && !pair_named;
+}
+
 void Validate(const CrashDescription& d) {
   if (d.vehicles.empty()) throw std::invalid_argument("vehicles: the description names no vehicle");
   const RoadDescription& r = d.road;
@@ -174,7 +186,7 @@ void Validate(const CrashDescription& d) {
   const int a = d.striker.known() ? d.IndexOf(d.striker.value) : -1;
   const int b = d.struck.known() ? d.IndexOf(d.struck.value) : -1;
   if (d.striker.known() && a < 0) throw std::invalid_argument("striker: no vehicle '" + d.striker.value + "'");
-  if (d.struck.known() && b < 0 && d.struck.value != "object") {
+  if (d.struck.known() && b < 0 && d.struck.value != kObjectId) {
     throw std::invalid_argument("struck: no vehicle '" + d.struck.value + "'");
   }
   if (a >= 0 && a == b) throw std::invalid_argument("struck: the same vehicle as the striker (" + d.striker.value + ")");
@@ -232,6 +244,7 @@ nlohmann::json ToJson(const CrashDescription& d) {
       {"location", J(d.location, [](CrashLocation l) { return std::string(ToString(l)); })},
       {"striker", J(d.striker)},
       {"struck", J(d.struck)},
+      {"obstacle", J(d.obstacle, [](ObstaclePlace p) { return std::string(ToString(p)); })},
       {"notes", d.notes},
   };
 }
@@ -280,6 +293,7 @@ CrashDescription CrashDescriptionFromJson(const nlohmann::json& j) {
   Read(j, "location", "", d.location, [&](const nlohmann::json& v) { return CrashLocationFromString(str(v)); });
   Read(j, "striker", "", d.striker);
   Read(j, "struck", "", d.struck);
+  Read(j, "obstacle", "", d.obstacle, [&](const nlohmann::json& v) { return ObstaclePlaceFromString(str(v)); });
   if (j.contains("notes")) d.notes = j.at("notes").get<std::vector<std::string>>();
   return d;
 }
@@ -338,7 +352,9 @@ CrashDescription FromAccidentRecord(const AccidentRecord& r, std::optional<RoadT
     d.vehicles.push_back(std::move(o));
   }
   if (r.crash.striking.known() && d.IndexOf(r.crash.striking.value) >= 0) d.striker = r.crash.striking;
-  if (r.crash.struck.known() && d.IndexOf(r.crash.struck.value) >= 0) d.struck = r.crash.struck;
+  if (r.crash.struck.known() && (d.IndexOf(r.crash.struck.value) >= 0 || r.crash.struck.value == kObjectId)) {
+    d.struck = r.crash.struck;
+  }
   if (d.striker.known() && d.striker.value == d.struck.value) d.struck = {};
   const auto area = [&](const Field<std::string>& who, const Field<DamageArea>& plane, const Field<std::string>& detail) {
     if (!who.known()) return;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace accsim {
@@ -41,6 +42,15 @@ CrashType TypeCode(int code) {
          : code >= 76 && code <= 85 ? CrashType::kTurnIntoPath
          : code >= 86 && code <= 91 ? CrashType::kAngle
                                     : CrashType::kUnknown;
+}
+
+// Single-driver crash types: 1-5 right roadside departure, 6-10 left,
+// 11-19 forward impact (an object or parked vehicle in the lane).
+std::optional<ObstaclePlace> PlaceCode(int code) {
+  if (code >= 1 && code <= 5) return ObstaclePlace::kRightRoadside;
+  if (code >= 6 && code <= 10) return ObstaclePlace::kLeftRoadside;
+  if (code >= 11 && code <= 19) return ObstaclePlace::kInLane;
+  return std::nullopt;
 }
 
 Manoeuvre MovementCode(const std::string& m) {
@@ -139,22 +149,40 @@ CrashDescription DescriptionFromLabels(const nlohmann::json& row) {
   }
   // The crash type is coded per vehicle; the first vehicle with a code wins.
   for (const auto& v : row["vehicles"]) {
-    const std::string code = ciren ? Get(v, "crash_type") : Get(v, "crash_type_code");
-    const CrashType t = TypeCode(std::atoi(code.c_str()));
+    const int code = std::atoi((ciren ? Get(v, "crash_type") : Get(v, "crash_type_code")).c_str());
+    const CrashType t = TypeCode(code);
     if (t != CrashType::kUnknown) {
       d.type.Set(t, Provenance::kStated);
+      if (const auto place = PlaceCode(code)) d.obstacle.Set(*place, Provenance::kStated);
       break;
     }
   }
-  // The reconstructed impact: the first vehicle-to-vehicle event by number.
+  // The reconstructed impact: the first vehicle-to-vehicle event by number;
+  // with none, the first impact on an object.
   if (row.contains("events") && row["events"].is_array()) {
-    const nlohmann::json* first = nullptr;
-    int best = std::numeric_limits<int>::max();
-    for (const auto& ev : row["events"]) {
-      const std::string hit = Get(ev, ciren ? "contacted" : "object_hit");
-      if (!Starts(hit, "Vehicle#")) continue;
-      const int n = std::atoi(Get(ev, ciren ? "event" : "event_number").c_str());
-      if (n < best) best = n, first = &ev;
+    const auto first_event = [&](bool vehicle) -> const nlohmann::json* {
+      const nlohmann::json* first = nullptr;
+      int best = std::numeric_limits<int>::max();
+      for (const auto& ev : row["events"]) {
+        const bool hit_vehicle = Starts(Get(ev, ciren ? "contacted" : "object_hit"), "Vehicle#");
+        const bool impact = AreaCode(Get(ev, ciren ? "area_of_damage" : "striker_area_damage")) != ImpactArea::kUnknown;
+        if (vehicle ? !hit_vehicle : hit_vehicle || !impact) continue;
+        const int n = std::atoi(Get(ev, ciren ? "event" : "event_number").c_str());
+        if (n < best) best = n, first = &ev;
+      }
+      return first;
+    };
+    const nlohmann::json* first = first_event(true);
+    const nlohmann::json* object = first ? nullptr : first_event(false);
+    if (object) {
+      const auto& e = *object;
+      const int ia = d.IndexOf("V" + Get(e, ciren ? "veh" : "striker_vehicle"));
+      if (ia >= 0) {
+        d.striker.Set(d.vehicles[static_cast<size_t>(ia)].id, Provenance::kStated);
+        d.struck.Set(std::string(kObjectId), Provenance::kStated);
+        d.vehicles[static_cast<size_t>(ia)].impact_area.Set(
+            AreaCode(Get(e, ciren ? "area_of_damage" : "striker_area_damage")), Provenance::kStated);
+      }
     }
     if (first) {
       const auto& e = *first;

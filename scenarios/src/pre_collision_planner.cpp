@@ -10,6 +10,7 @@
 #include <optional>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 
 namespace accsim {
 namespace {
@@ -79,6 +80,33 @@ CrashType InferType(ImpactArea a, ImpactArea b, Manoeuvre ma, Manoeuvre mb, Road
   return CrashType::kAngle;
 }
 
+// A single-vehicle crash: the struck object becomes a stationary body (a
+// parked car's box: the scenario holds vehicles only), placed where the
+// description puts it, else on the side the damage faces.
+void AddObstacle(CrashDescription& d) {
+  auto note = [&](std::string s) { d.notes.push_back(std::move(s)); };
+  if (!d.striker.known() || d.IndexOf(d.striker.value) < 0) {
+    d.striker.Set(d.vehicles.front().id, Provenance::kInferred);
+    note("striker: not stated; " + d.striker.value + " (the only traffic unit)");
+  }
+  if (!d.struck.known() || d.struck.value != kObjectId) d.struck.Set(std::string(kObjectId), Provenance::kInferred);
+  if (!d.type.known() || d.type.value != CrashType::kSingleVehicle) {
+    d.type.Set(CrashType::kSingleVehicle, Provenance::kInferred);
+  }
+  const ImpactArea area = d.vehicles[static_cast<size_t>(d.IndexOf(d.striker.value))].impact_area.value;
+  if (!d.obstacle.known()) {
+    d.obstacle.Set(HasLeft(area) ? ObstaclePlace::kLeftRoadside : ObstaclePlace::kRightRoadside, Provenance::kInferred);
+    note("obstacle: not stated; " + std::string(ToString(d.obstacle.value)) + " (the side the damage faces, else the right)");
+  }
+  VehicleDescription o;
+  o.id = std::string(kObjectId);
+  o.movement.Set(Manoeuvre::kStopped, Provenance::kInferred);
+  o.speed.Set(0.0, Provenance::kInferred);
+  o.parked = true;
+  d.vehicles.push_back(std::move(o));
+  note("object: a stationary car-sized box, " + std::string(ToString(d.obstacle.value)));
+}
+
 }  // namespace
 
 ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, const PlannerConfig& config) {
@@ -88,16 +116,12 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
   CrashDescription& d = c.description;
   auto note = [&](std::string s) { d.notes.push_back(std::move(s)); };
   std::mt19937_64 rng(seed);
+  if (d.vehicles.empty()) throw std::invalid_argument("vehicles: a reconstruction needs a vehicle, the description has none");
+  if (d.SingleVehicle()) {
+    AddObstacle(d);
+    c.obstacle = true;
+  }
   const int n = static_cast<int>(d.vehicles.size());
-  if (d.type.value == CrashType::kSingleVehicle && d.type.known() && !(d.striker.known() && d.struck.known() &&
-                                                                       d.IndexOf(d.struck.value) >= 0)) {
-    throw std::invalid_argument(
-        "type: single-vehicle crash: there is no second traffic unit to meet, so it is not reconstructed");
-  }
-  if (n < 2) {
-    throw std::invalid_argument("vehicles: a reconstruction needs two vehicles, the description has " +
-                                std::to_string(n));
-  }
   // Roles as described, filled where open.
   int a = d.striker.known() ? d.IndexOf(d.striker.value) : -1;
   int b = d.struck.known() ? d.IndexOf(d.struck.value) : -1;
@@ -114,7 +138,7 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
     d.struck.Set(d.vehicles[static_cast<size_t>(b)].id, Provenance::kInferred);
     note("struck: not stated; " + d.struck.value);
   }
-  if (d.type.value == CrashType::kSingleVehicle) {
+  if (!c.obstacle && d.type.value == CrashType::kSingleVehicle) {
     note("type: coded single-vehicle, but " + d.striker.value + " struck " + d.struck.value +
          "; the type is inferred from the damaged areas");
     d.type.Set(CrashType::kUnknown, Provenance::kDefaulted);
@@ -124,7 +148,7 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
   // Investigators list the vehicle that caused the crash first even when its
   // side or back was hit (it ran the light, pulled out); physically the
   // other's front strikes. Plan the physics, check the description.
-  if (IsSideOrBack(area_a) && (IsFront(area_b) || area_b == ImpactArea::kUnknown)) {
+  if (!c.obstacle && IsSideOrBack(area_a) && (IsFront(area_b) || area_b == ImpactArea::kUnknown)) {
     std::swap(a, b);
     std::swap(area_a, area_b);
     c.roles_swapped = true;
@@ -369,6 +393,50 @@ std::pair<VehiclePath, VehiclePath> OppositeDirectionCorner(const RoadMap& map, 
   return {c, k};
 }
 
+// A single vehicle and the stationary object it strikes: in its lane ahead,
+// or beside the road, reached on a Dubins drift off the road. The front
+// meets the object's back; a described side meets the object's near side
+// with the front corner.
+std::pair<VehiclePath, VehiclePath> ObstaclePaths(const RoadMap& map, ObstaclePlace place, const Party& v,
+                                                  VehicleClass object) {
+  if (v.area == ImpactArea::kRear || v.area == ImpactArea::kRearLeft || v.area == ImpactArea::kRearRight) {
+    throw std::invalid_argument("plan: an object struck with the back needs backing, which is not planned");
+  }
+  const double w = map.spec().lane_width, hl = HalfLength(object), hw = HalfWidth(object);
+  const int lanes = map.spec().lanes_per_direction;
+  const int lane = place == ObstaclePlace::kLeftRoadside ? 0 : lanes - 1;
+  const double y0 = LaneY(map, Compass::kEast, lane);
+  const double y = place == ObstaclePlace::kInLane         ? y0
+                   : place == ObstaclePlace::kRightRoadside ? y0 - w / 2 - 1.0 - hw
+                                                            : LaneY(map, Compass::kWest, lanes - 1) + w / 2 + 1.0 + hw;
+  constexpr double kObjectX = 60.0;  // [m] where the object stands
+  const double half = kStraightLength / 2;
+  const std::string where(ToString(place));
+  VehiclePath k{Polyline({Vec2(-half, y), Vec2(half, y)}), half + kObjectX, "object " + where, false, true};
+  VehiclePath a;
+  if (place == ObstaclePlace::kInLane) {
+    a = {map.lane(map.FindLane(Compass::kEast, false, lane)).centreline, 0.0,
+         "east lane " + std::to_string(lane) + " keeps its lane", false};
+  } else {
+    const double x_from = kObjectX - 25.0 - 2.4 * std::sqrt(v.radius * std::abs(y - y0));
+    a = {DubinsLaneChange(y0, y, x_from, v.radius), 0.0,
+         "east lane " + std::to_string(lane) + " leaving the road to the " +
+             (place == ObstaclePlace::kLeftRoadside ? "left" : "right"),
+         true, true};
+  }
+  if (IsFront(v.area) || v.area == ImpactArea::kUnknown) {
+    a.impact_s = a.path.Project(Vec2(kObjectX - hl - HalfLength(v.cls), y)).s;
+    return {a, k};
+  }
+  const int side = HasLeft(v.area) ? 1 : -1;
+  if (place == ObstaclePlace::kInLane || (side > 0) != (place == ObstaclePlace::kLeftRoadside)) {
+    throw std::invalid_argument("plan: a " + std::string(ToString(v.area)) + " impact cannot reach an object " +
+                                where);
+  }
+  MeetAtFrontCorner(a, k, v.cls, side, 0.0, Vec2(0.0, -side * hw));
+  return {a, k};
+}
+
 double Meet(const Polyline& p, const Polyline& q) {
   for (double s = 0; s <= p.length(); s += 0.05) {
     if (q.Project(p.PointAt(s)).distance < 0.05) return s;
@@ -547,6 +615,9 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
       pa.impact_s -= HalfLength(ca) + HalfWidth(cb);
       break;
     }
+    case CrashType::kSingleVehicle:
+      std::tie(pa, pb) = ObstaclePaths(map, d.obstacle.value, Party{ca, c.striker_area, A.movement.value, radius}, cb);
+      break;
     default: throw std::invalid_argument("type: cannot reconstruct crash type " + std::string(ToString(type)));
   }
   std::vector<LaneCombination> out;
@@ -603,7 +674,8 @@ std::vector<LaneCombination> GatherLaneCombinations(const ImpactConfiguration& c
   const CrashType by_areas =
       InferType(c.striker_area, c.struck_area, d.vehicles[static_cast<size_t>(c.striker)].movement.value,
                 d.vehicles[static_cast<size_t>(c.struck)].movement.value, d.road.type.value);
-  if (by_areas != c.type && c.striker_area != ImpactArea::kUnknown && c.struck_area != ImpactArea::kUnknown) {
+  if (!c.obstacle && by_areas != c.type && c.striker_area != ImpactArea::kUnknown &&
+      c.struck_area != ImpactArea::kUnknown) {
     types.push_back(by_areas);
   }
   for (const CrashType type : types) {
@@ -782,7 +854,7 @@ PlannedCrash TimeParameterise(const ImpactConfiguration& c, const LaneCombinatio
       const Vec2 q = vp.path.PointAt(s);
       pts.push_back({t, q.x(), q.y(), HeadingNear(vp.path, s), prof.V(t)});
       if (t <= T) {
-        if (!map.OnRoad(q)) {
+        if (!vp.off_road && !map.OnRoad(q)) {
           throw std::invalid_argument("plan: " + v.id + " leaves the drivable area at " + Fmt("%.2f s", t));
         }
         p.peak_lateral_accel = std::max(p.peak_lateral_accel, prof.V(t) * prof.V(t) * CurvatureAt(vp.path, s));
@@ -861,7 +933,8 @@ PlannedCrash TimeParameterise(const ImpactConfiguration& c, const LaneCombinatio
   s.seed = seed;
   s.time_limit = horizon;
   s.map = k.map;
-  const size_t ego = static_cast<size_t>(dt);
+  // A single vehicle is the ego itself.
+  const size_t ego = static_cast<size_t>(c.obstacle ? ds : dt);
   const Trajectory& te = p.trajectories[ego];
   const TrajectoryPoint e0 = te.Sample(0.0);
   s.ego.id = p.ids[ego];

@@ -159,20 +159,13 @@ SrrReport EvaluateReconstruction(const std::string& dir, DescriptionSource from,
     const RoadType road = LabelledRoadType(row);
     const std::string group(ToString(road));
     ++rep.n;
-    bool counted = false;
+    ++rep.attempted[group];
     try {
       CrashDescription d = from == DescriptionSource::kLabels
                                ? DescriptionFromLabels(row)
                                : FromAccidentRecord(extractor.Extract(row.value("narrative", "")), road);
       d.source_id = file;
-      const bool pair_named = d.striker.known() && d.struck.known() && d.IndexOf(d.struck.value) >= 0;
-      if (d.vehicles.size() < 2 || (d.type.value == CrashType::kSingleVehicle && !pair_named)) {
-        ++rep.single_vehicle[group];
-        rep.failures.push_back(file + ": single-vehicle crash, not reconstructed (counted apart)");
-        continue;
-      }
-      ++rep.attempted[group];
-      counted = true;
+      if (d.SingleVehicle()) ++rep.single_vehicle[group];
       const Reconstruction r = Reconstruct(d, seed);
       if (r.check.success) {
         ++rep.succeeded[group];
@@ -180,7 +173,6 @@ SrrReport EvaluateReconstruction(const std::string& dir, DescriptionSource from,
         rep.failures.push_back(file + ": " + r.check.reason + " [" + r.plan.combination + "]");
       }
     } catch (const std::exception& e) {
-      if (!counted) ++rep.attempted[group];
       rep.failures.push_back(file + ": " + e.what());
     }
   }

@@ -50,7 +50,7 @@ TEST(PreCollisionPlannerTest, Phase1PlansTheFrontThatStrikes) {
   EXPECT_NEAR(c.approach_angle, -kPi / 2, 1e-12);
 }
 
-TEST(PreCollisionPlannerTest, Phase1InfersTheTypeAndRefusesSingleVehicles) {
+TEST(PreCollisionPlannerTest, Phase1InfersTheTypeAndGivesSingleVehiclesAnObstacle) {
   auto d = Two(CrashType::kUnknown, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kRear);
   d.type = {};
   const ImpactConfiguration c = ResolveImpact(d, 0);
@@ -59,15 +59,19 @@ TEST(PreCollisionPlannerTest, Phase1InfersTheTypeAndRefusesSingleVehicles) {
   // The striker must close on the vehicle ahead.
   EXPECT_GE(c.impact_speed[0], c.impact_speed[1] + 3.0 - 1e-9);
 
-  auto one = Two(CrashType::kSingleVehicle, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kUnknown);
+  // One traffic unit: the struck object is a stationary body on the side
+  // the damage faces.
+  auto one = Two(CrashType::kSingleVehicle, RoadType::kStraight, ImpactArea::kLeft, ImpactArea::kUnknown);
   one.vehicles.resize(1);
   one.struck = {};
-  try {
-    ResolveImpact(one, 0);
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("type: single-vehicle", 0), 0u) << e.what();
-  }
+  const ImpactConfiguration o = ResolveImpact(one, 0);
+  EXPECT_TRUE(o.obstacle);
+  ASSERT_EQ(o.description.vehicles.size(), 2u);
+  EXPECT_EQ(o.description.vehicles[1].id, kObjectId);
+  EXPECT_EQ(o.impact_speed[1], 0.0);
+  EXPECT_EQ(o.striker, 0);  // a side impact on an object does not swap the roles
+  EXPECT_EQ(o.description.obstacle.value, ObstaclePlace::kLeftRoadside);
+  EXPECT_EQ(o.description.obstacle.source, Provenance::kInferred);
   auto zero = one;
   zero.vehicles.clear();
   zero.striker = {};

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
+#include "accsim/scenarios/labelled_case.h"
 #include "accsim/scenarios/narrative_extractor.h"
 
 namespace accsim {
@@ -74,6 +77,49 @@ TEST(ReconstructionTest, SideswipesMeetWithTheLaneChangersFrontCorner) {
   }
 }
 
+CrashDescription One(ImpactArea area, std::optional<ObstaclePlace> place) {
+  CrashDescription d;
+  d.vehicles.resize(1);
+  d.vehicles[0].id = "V1";
+  d.vehicles[0].speed.Set(22.0, Provenance::kStated);
+  d.vehicles[0].impact_area.Set(area, Provenance::kStated);
+  d.road.lanes_per_direction.Set(2, Provenance::kStated);
+  d.striker.Set("V1", Provenance::kStated);
+  d.struck.Set(std::string(kObjectId), Provenance::kStated);
+  if (place) d.obstacle.Set(*place, Provenance::kStated);
+  return d;
+}
+
+TEST(ReconstructionTest, SingleVehiclesStrikeAStationaryObstacle) {
+  struct Case {
+    ImpactArea area;
+    std::optional<ObstaclePlace> place;
+  };
+  const Case cases[] = {
+      {ImpactArea::kFront, ObstaclePlace::kRightRoadside}, {ImpactArea::kFront, ObstaclePlace::kLeftRoadside},
+      {ImpactArea::kFront, ObstaclePlace::kInLane},        {ImpactArea::kFrontLeft, std::nullopt},
+      {ImpactArea::kLeft, std::nullopt},                   {ImpactArea::kRight, ObstaclePlace::kRightRoadside},
+  };
+  for (const Case& k : cases) {
+    const Reconstruction r = Reconstruct(One(k.area, k.place));
+    EXPECT_TRUE(r.check.success) << ToString(k.area) << ": " << r.check.reason << " [" << r.plan.combination << "]";
+    EXPECT_EQ(r.plan.scenario.ego.id, "V1");  // the only traffic unit is the ego
+    ASSERT_EQ(r.plan.scenario.npcs.size(), 1u);
+    const Trajectory& object = r.plan.scenario.npcs.front().reference;
+    EXPECT_EQ(object.Sample(0.0).x, object.Sample(r.plan.state.time).x);  // it stands still
+  }
+  // Beside the road means beside it: the object's centre is off the drivable area.
+  const Reconstruction right = Reconstruct(One(ImpactArea::kFront, ObstaclePlace::kRightRoadside));
+  EXPECT_FALSE(RoadMap(right.plan.scenario.map).OnRoad(right.plan.state.bodies[1].pose.position()));
+  // Backing into an object is not planned; the error says so.
+  try {
+    Reconstruct(One(ImpactArea::kRear, std::nullopt));
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("backing"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ReconstructionTest, SavedScenarioChecksAgain) {
   const Reconstruction r = Reconstruct(Two(CrashType::kAngle, RoadType::kTJunction, ImpactArea::kFront,
                                            ImpactArea::kLeft, Manoeuvre::kStraight, Manoeuvre::kStraight));
@@ -105,6 +151,24 @@ TEST(ReconstructionTest, NarrativeToCheckedScenario) {
   const Reconstruction r = Reconstruct(FromAccidentRecord(rec));
   EXPECT_TRUE(r.check.success) << r.check.reason;
   EXPECT_EQ(r.plan.scenario.npcs.front().id, "V1");
+}
+
+TEST(ReconstructionTest, LabelledObjectImpactsAreSingleVehicleCrashes) {
+  // A CIREN-style row: one vehicle, a right roadside departure into a tree.
+  const nlohmann::json row = nlohmann::json::parse(R"json({
+    "file": "CIREN/1/crash_report.xml", "vehicle_summaries": [],
+    "vehicles": [{"veh": "1", "pre_event_movement": "Going Straight", "crash_type": "1 1 DRIVE OFF ROAD",
+                  "relation_to_junction": "Non-interchange area and non-junction", "travel_lanes": "Two",
+                  "relation_to_flow": "Not physically divided (two way traffic)", "posted_speed_limit_kmph": "89"}],
+    "events": [{"veh": "1", "event": "1", "area_of_damage": "Front", "contacted": "Tree(> 10 cm in diameter)",
+                "contacted_area_of_damage": "Not a motor vehicle"}]})json");
+  const CrashDescription d = DescriptionFromLabels(row);
+  EXPECT_TRUE(d.SingleVehicle());
+  EXPECT_EQ(d.struck.value, kObjectId);
+  EXPECT_EQ(d.obstacle.value, ObstaclePlace::kRightRoadside);
+  EXPECT_EQ(d.obstacle.source, Provenance::kStated);
+  EXPECT_EQ(d.vehicles[0].impact_area.value, ImpactArea::kFront);
+  EXPECT_TRUE(Reconstruct(d).check.success);
 }
 
 TEST(ReconstructionTest, DevelopmentSetRatesFromLabels) {

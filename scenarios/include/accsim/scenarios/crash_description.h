@@ -32,11 +32,20 @@ enum class Manoeuvre {
 // The part of a vehicle involved in the impact: a plane or a corner.
 enum class ImpactArea { kFront, kRear, kLeft, kRight, kFrontLeft, kFrontRight, kRearLeft, kRearRight, kUnknown };
 
+// Where the fixed object a single vehicle struck stood: in its lane, or
+// beside the road on the left or right of its direction of travel.
+enum class ObstaclePlace { kInLane, kLeftRoadside, kRightRoadside };
+
+// The struck party's id when it is an object, not a vehicle.
+inline constexpr std::string_view kObjectId = "object";
+
 std::string_view ToString(Manoeuvre m);
 std::string_view ToString(ImpactArea a);
+std::string_view ToString(ObstaclePlace p);
 // Throw std::invalid_argument naming the accepted values.
 Manoeuvre ManoeuvreFromString(std::string_view s);
 ImpactArea ImpactAreaFromString(std::string_view s);
+ObstaclePlace ObstaclePlaceFromString(std::string_view s);
 // True when `area` includes the plane `face` (kFrontLeft includes kFront
 // and kLeft; kUnknown includes every face).
 bool AreaIncludes(ImpactArea area, ImpactArea face);
@@ -74,11 +83,16 @@ struct CrashDescription {
   Field<CrashType> type{CrashType::kUnknown};
   Field<CrashLocation> location{CrashLocation::kSegment};
   Field<std::string> striker;  // vehicle id of the striking vehicle
-  Field<std::string> struck;   // vehicle id of the struck vehicle
+  Field<std::string> struck;   // vehicle id of the struck vehicle, or kObjectId
+  // Single-vehicle crashes: where the struck object stood.
+  Field<ObstaclePlace> obstacle{ObstaclePlace::kRightRoadside};
   std::vector<std::string> notes;  // what was inferred or drawn, and why
 
   // Index of the vehicle with that id; -1 when there is none.
   int IndexOf(const std::string& id) const;
+  // One traffic unit: a single vehicle, a struck object, or a crash coded
+  // single-vehicle that names no struck vehicle.
+  bool SingleVehicle() const;
 };
 
 // Throws std::invalid_argument naming the field and the reason when the

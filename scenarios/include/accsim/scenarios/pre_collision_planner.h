@@ -53,6 +53,7 @@ struct ImpactConfiguration {
   CrashType type = CrashType::kUnknown;  // resolved
   int striker = 0, struck = 1;   // vehicle indices of the physical roles: the striker's front hits
   bool roles_swapped = false;    // the description names the other vehicle as the striker
+  bool obstacle = false;         // single-vehicle crash: the struck object is the last body (id kObjectId)
   ImpactArea striker_area = ImpactArea::kFront, struck_area = ImpactArea::kUnknown;  // physical roles' areas
   double approach_angle = 0.0;   // [rad] struck heading minus striker heading at impact (0 rear-end, pi head-on)
   std::vector<double> start_speed;   // [m/s] per vehicle, at t = 0
@@ -60,8 +61,9 @@ struct ImpactConfiguration {
 };
 
 // Throws std::invalid_argument naming the field when the description is
-// invalid (Validate) or cannot be planned (fewer than two vehicles, a
-// single-vehicle crash, no struck vehicle).
+// invalid (Validate) or names no vehicle. A single-vehicle crash
+// (CrashDescription::SingleVehicle) gets the struck object as a stationary
+// body, appended to the vehicles with id kObjectId.
 ImpactConfiguration ResolveImpact(const CrashDescription& d, uint64_t seed, const PlannerConfig& config = {});
 
 // Phase 2 output: one way for the vehicles to meet.
@@ -70,6 +72,7 @@ struct VehiclePath {
   double impact_s = 0;   // [m] arc length of the vehicle's centre at the impact
   std::string lanes;     // what the path follows, for reports ("north inbound 0 -> left connector")
   bool leaves_lane = false;  // part of the path is an OMPL Dubins curve off the lane centrelines
+  bool off_road = false;     // a roadside departure or object: not held to the drivable area
 };
 struct LaneCombination {
   RoadMapSpec map;

@@ -50,8 +50,8 @@ enum class DescriptionSource { kLabels, kNarrative };
 
 struct SrrReport {
   // By road type (intersection, t_junction, straight). Single-vehicle
-  // crashes have no second traffic unit to meet; they are counted in
-  // `single_vehicle` and left out of `attempted`.
+  // crashes are reconstructed against a stationary obstacle and counted in
+  // `attempted` like the others; `single_vehicle` says how many there were.
   std::map<std::string, int> attempted, succeeded, single_vehicle;
   std::vector<std::string> failures;  // "case: reason"
   int n = 0;
