@@ -76,6 +76,7 @@ void AddReconstructCommands(CLI::App& app) {
                                   {"combination", r.plan.combination},
                                   {"imminent_collision_state", ToJson(r.plan.state)},
                                   {"notes", r.plan.impact.description.notes},
+                                  {"warnings", r.plan.impact.description.warnings},
                                   {"out", o->out}}
                        .dump()
                 << "\n";
@@ -89,6 +90,7 @@ void AddReconstructCommands(CLI::App& app) {
       std::printf("  %-4s x %7.2f  y %7.2f  yaw %6.3f  v %5.2f m/s  yaw rate %6.3f rad/s\n", b.id.c_str(), b.pose.x,
                   b.pose.y, b.pose.yaw, b.velocity.norm(), b.yaw_rate);
     }
+    for (const auto& w : r.plan.impact.description.warnings) std::printf("warning     %s\n", w.c_str());
     for (const auto& n : r.plan.impact.description.notes) std::printf("note        %s\n", n.c_str());
     std::printf("check       %s%s%s\n", c.success ? "reconstructed" : "FAILED", c.success ? "" : ": ",
                 c.reason.c_str());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -68,8 +69,99 @@ Provenance ProvenanceFromString(std::string_view s, const std::string& path) {
                               "' (expected stated, inferred or defaulted)");
 }
 
-bool Opposite(Compass a, Compass b) { return (static_cast<int>(a) + 2) % 4 == static_cast<int>(b); }
-bool Crossing(Compass a, Compass b) { return (static_cast<int>(a) + static_cast<int>(b)) % 2 == 1; }
+bool Stated(Provenance p) { return p == Provenance::kStated; }
+// Kept on a contradiction: stated over inferred over defaulted.
+int Rank(Provenance p) { return p == Provenance::kStated ? 2 : p == Provenance::kInferred ? 1 : 0; }
+
+std::string VehicleField(size_t i) { return "vehicles[" + std::to_string(i) + "]"; }
+
+std::string_view Expected(CrashType t) {
+  switch (t) {
+    case CrashType::kRearEnd:
+    case CrashType::kSideswipeSame: return "the same direction";
+    case CrashType::kHeadOn:
+    case CrashType::kSideswipeOpposite: return "the opposite direction";
+    case CrashType::kAngle: return "a crossing direction";
+    default: return "any direction";
+  }
+}
+
+// The striker and struck vehicles' indices, -1 when not named.
+std::pair<int, int> Pair(const CrashDescription& d) {
+  return {d.striker.known() ? d.IndexOf(d.striker.value) : -1, d.struck.known() ? d.IndexOf(d.struck.value) : -1};
+}
+
+// Directions against the crash type: the weaker of the type and the
+// weaker direction gives way (a direction on a tie).
+void ReconcileCourse(CrashDescription& d) {
+  const auto [a, b] = Pair(d);
+  if (a < 0 || b < 0 || a == b || !d.type.known()) return;
+  auto& va = d.vehicles[static_cast<size_t>(a)];
+  auto& vb = d.vehicles[static_cast<size_t>(b)];
+  const auto course = CourseOf(va, vb);
+  if (!course || TypeFits(d.type.value, *course)) return;
+  const bool a_weaker = Rank(va.travel.source) < Rank(vb.travel.source);
+  auto& weak = a_weaker ? va : vb;
+  const size_t weak_index = static_cast<size_t>(a_weaker ? a : b);
+  if (Stated(d.type.source) && Stated(weak.travel.source)) return;  // Validate refuses
+  const std::string directions = va.id + " " + std::string(ToString(*va.travel.value)) + ", " + vb.id + " " +
+                                 std::string(ToString(*vb.travel.value));
+  if (Rank(d.type.source) < Rank(weak.travel.source)) {
+    d.warnings.push_back("type: " + std::string(ToString(d.type.source)) + " " + std::string(ToString(d.type.value)) +
+                         " contradicts the " + std::string(ToString(weak.travel.source)) + " directions (" +
+                         directions + "); set aside, the type is inferred again");
+    d.type = {CrashType::kUnknown, Provenance::kDefaulted};
+  } else {
+    d.warnings.push_back(VehicleField(weak_index) + ".travel: " + std::string(ToString(weak.travel.source)) + " " +
+                         std::string(ToString(*weak.travel.value)) + " contradicts the " +
+                         std::string(ToString(d.type.source)) + " crash type " + std::string(ToString(d.type.value)) +
+                         " (expected " + std::string(Expected(d.type.value)) + "); set aside");
+    weak.travel = {};
+  }
+}
+
+// A stopped vehicle with a speed: the weaker gives way (the speed on a tie).
+void ReconcileStopped(CrashDescription& d) {
+  for (size_t i = 0; i < d.vehicles.size(); ++i) {
+    auto& v = d.vehicles[i];
+    if (v.movement.value != Manoeuvre::kStopped || !v.speed.value || *v.speed.value <= 1.0) continue;
+    if (!v.movement.known() || !v.speed.known()) continue;
+    if (Stated(v.movement.source) && Stated(v.speed.source)) continue;  // Validate refuses
+    char speed[32];
+    std::snprintf(speed, sizeof speed, "%.1f m/s", *v.speed.value);
+    if (Rank(v.movement.source) < Rank(v.speed.source)) {
+      d.warnings.push_back(VehicleField(i) + ".movement: inferred stopped contradicts the stated speed " + speed +
+                           "; set aside, planned straight");
+      v.movement = {Manoeuvre::kStraight, Provenance::kDefaulted};
+    } else {
+      d.warnings.push_back(VehicleField(i) + ".speed: " + std::string(ToString(v.speed.source)) + " " + speed +
+                           " contradicts movement stopped; set aside");
+      v.speed = {};
+    }
+  }
+}
+
+// A lane outside the lane count: a stated lane widens an unstated count,
+// else the lane gives way.
+void ReconcileLanes(CrashDescription& d) {
+  auto& lanes = d.road.lanes_per_direction;
+  for (size_t i = 0; i < d.vehicles.size(); ++i) {
+    auto& lane = d.vehicles[i].lane;
+    if (!lane.value || (*lane.value >= 0 && *lane.value < lanes.value)) continue;
+    if (Stated(lane.source) && Stated(lanes.source)) continue;  // Validate refuses
+    if (Rank(lanes.source) < Rank(lane.source) && *lane.value >= 0 && *lane.value < 4) {
+      d.warnings.push_back("road.lanes_per_direction: " + std::string(ToString(lanes.source)) + " " +
+                           std::to_string(lanes.value) + " has no lane " + std::to_string(*lane.value) + " (" +
+                           VehicleField(i) + ".lane); raised to " + std::to_string(*lane.value + 1));
+      lanes.Set(*lane.value + 1, Provenance::kInferred);
+    } else {
+      d.warnings.push_back(VehicleField(i) + ".lane: " + std::string(ToString(lane.source)) + " " +
+                           std::to_string(*lane.value) + " is not a lane of a road with " +
+                           std::to_string(lanes.value) + " lane(s) per direction; set aside");
+      lane = {};
+    }
+  }
+}
 
 template <typename T, typename F>
 nlohmann::json J(const Field<T>& f, F&& conv) {
@@ -145,6 +237,29 @@ int CrashDescription::IndexOf(const std::string& id) const {
   return -1;
 }
 
+std::optional<Course> CourseOf(const VehicleDescription& a, const VehicleDescription& b) {
+  if (!a.travel.known() || !b.travel.known() || !a.travel.value || !b.travel.value) return std::nullopt;
+  const int x = static_cast<int>(*a.travel.value), y = static_cast<int>(*b.travel.value);
+  return x == y ? Course::kSame : (x + 2) % 4 == y ? Course::kOpposite : Course::kCrossing;
+}
+
+bool TypeFits(CrashType type, Course course) {
+  switch (type) {
+    case CrashType::kRearEnd:
+    case CrashType::kSideswipeSame: return course == Course::kSame;
+    case CrashType::kHeadOn:
+    case CrashType::kSideswipeOpposite: return course == Course::kOpposite;
+    case CrashType::kAngle: return course == Course::kCrossing;
+    default: return true;
+  }
+}
+
+void Reconcile(CrashDescription& d) {
+  ReconcileCourse(d);
+  ReconcileStopped(d);
+  ReconcileLanes(d);
+}
+
 bool CrashDescription::SingleVehicle() const {
   if (vehicles.size() == 1 || (struck.known() && struck.value == kObjectId)) return true;
   const bool pair_named = striker.known() && struck.known() && IndexOf(struck.value) >= 0;
@@ -174,11 +289,12 @@ void Validate(const CrashDescription& d) {
         throw std::invalid_argument(path + ".speed: " + std::to_string(s) +
                                     " m/s is impossible for a road vehicle (at most 70 m/s)");
       }
-      if (v.movement.value == Manoeuvre::kStopped && v.movement.known() && v.speed.known() && s > 1.0) {
+      if (v.movement.value == Manoeuvre::kStopped && Stated(v.movement.source) && Stated(v.speed.source) && s > 1.0) {
         throw std::invalid_argument(path + ".speed: " + std::to_string(s) + " m/s contradicts movement stopped");
       }
     }
-    if (v.lane.value && (*v.lane.value < 0 || *v.lane.value >= r.lanes_per_direction.value)) {
+    if (v.lane.value && Stated(v.lane.source) && Stated(r.lanes_per_direction.source) &&
+        (*v.lane.value < 0 || *v.lane.value >= r.lanes_per_direction.value)) {
       throw std::invalid_argument(path + ".lane: " + std::to_string(*v.lane.value) + " is not a lane of a road with " +
                                   std::to_string(r.lanes_per_direction.value) + " lane(s) per direction");
     }
@@ -190,25 +306,17 @@ void Validate(const CrashDescription& d) {
     throw std::invalid_argument("struck: no vehicle '" + d.struck.value + "'");
   }
   if (a >= 0 && a == b) throw std::invalid_argument("struck: the same vehicle as the striker (" + d.striker.value + ")");
-  // Stated directions must fit the crash type.
-  if (a >= 0 && b >= 0 && d.type.known()) {
-    const auto& ta = d.vehicles[static_cast<size_t>(a)].travel;
-    const auto& tb = d.vehicles[static_cast<size_t>(b)].travel;
-    if (ta.known() && tb.known() && ta.value && tb.value) {
-      const Compass ca = *ta.value, cb = *tb.value;
-      const CrashType t = d.type.value;
-      std::string expected;
-      if ((t == CrashType::kRearEnd || t == CrashType::kSideswipeSame) && ca != cb) expected = "the same direction";
-      if ((t == CrashType::kHeadOn || t == CrashType::kSideswipeOpposite) && !Opposite(ca, cb)) {
-        expected = "the opposite direction";
-      }
-      if (t == CrashType::kAngle && !Crossing(ca, cb)) expected = "a crossing direction";
-      if (!expected.empty()) {
-        throw std::invalid_argument("vehicles[" + std::to_string(b) + "].travel: " + std::string(ToString(cb)) +
-                                    " contradicts crash type " + std::string(ToString(t)) + " (expected " + expected +
-                                    " to " + d.vehicles[static_cast<size_t>(a)].id + "'s " +
-                                    std::string(ToString(ca)) + ")");
-      }
+  // Stated directions must fit the stated crash type.
+  if (a >= 0 && b >= 0 && Stated(d.type.source)) {
+    const auto& va = d.vehicles[static_cast<size_t>(a)];
+    const auto& vb = d.vehicles[static_cast<size_t>(b)];
+    const auto course = CourseOf(va, vb);
+    if (course && Stated(va.travel.source) && Stated(vb.travel.source) && !TypeFits(d.type.value, *course)) {
+      throw std::invalid_argument(VehicleField(static_cast<size_t>(b)) + ".travel: " +
+                                  std::string(ToString(*vb.travel.value)) + " contradicts crash type " +
+                                  std::string(ToString(d.type.value)) + " (expected " +
+                                  std::string(Expected(d.type.value)) + " to " + va.id + "'s " +
+                                  std::string(ToString(*va.travel.value)) + ")");
     }
   }
 }
@@ -246,6 +354,7 @@ nlohmann::json ToJson(const CrashDescription& d) {
       {"struck", J(d.struck)},
       {"obstacle", J(d.obstacle, [](ObstaclePlace p) { return std::string(ToString(p)); })},
       {"notes", d.notes},
+      {"warnings", d.warnings},
   };
 }
 
@@ -295,6 +404,7 @@ CrashDescription CrashDescriptionFromJson(const nlohmann::json& j) {
   Read(j, "struck", "", d.struck);
   Read(j, "obstacle", "", d.obstacle, [&](const nlohmann::json& v) { return ObstaclePlaceFromString(str(v)); });
   if (j.contains("notes")) d.notes = j.at("notes").get<std::vector<std::string>>();
+  if (j.contains("warnings")) d.warnings = j.at("warnings").get<std::vector<std::string>>();
   return d;
 }
 

@@ -60,7 +60,7 @@ Limits LimitsFor(const PlannerConfig& c, Surface s) {
 
 // The crash type when the description leaves it open, from the damaged
 // areas, the movements and the road.
-CrashType InferType(ImpactArea a, ImpactArea b, Manoeuvre ma, Manoeuvre mb, RoadType road) {
+CrashType TypeFromAreas(ImpactArea a, ImpactArea b, Manoeuvre ma, Manoeuvre mb, RoadType road) {
   const bool left_turn = ma == Manoeuvre::kTurnLeft || mb == Manoeuvre::kTurnLeft;
   const bool right_turn = ma == Manoeuvre::kTurnRight || mb == Manoeuvre::kTurnRight;
   const bool lane_change = ma == Manoeuvre::kLaneChangeLeft || ma == Manoeuvre::kLaneChangeRight ||
@@ -78,6 +78,23 @@ CrashType InferType(ImpactArea a, ImpactArea b, Manoeuvre ma, Manoeuvre mb, Road
   if (right_turn) return CrashType::kTurnIntoPath;
   if (a == ImpactArea::kUnknown && b == ImpactArea::kUnknown && road == RoadType::kStraight) return CrashType::kRearEnd;
   return CrashType::kAngle;
+}
+
+// As TypeFromAreas, kept to the known directions of travel: the nearest
+// type that fits them.
+CrashType InferType(ImpactArea a, ImpactArea b, Manoeuvre ma, Manoeuvre mb, RoadType road,
+                    std::optional<Course> course) {
+  const CrashType t = TypeFromAreas(a, b, ma, mb, road);
+  if (!course || TypeFits(t, *course)) return t;
+  const bool rear = b == ImpactArea::kRear || b == ImpactArea::kRearLeft || b == ImpactArea::kRearRight;
+  switch (*course) {
+    case Course::kSame: return IsFront(a) && rear ? CrashType::kRearEnd : CrashType::kSideswipeSame;
+    case Course::kOpposite:
+      if (ma == Manoeuvre::kTurnLeft || mb == Manoeuvre::kTurnLeft) return CrashType::kTurnAcrossPath;
+      return IsFront(a) && IsFront(b) ? CrashType::kHeadOn : CrashType::kSideswipeOpposite;
+    case Course::kCrossing: return Turning(ma) || Turning(mb) ? CrashType::kTurnIntoPath : CrashType::kAngle;
+  }
+  return t;
 }
 
 // A single-vehicle crash: the struck object becomes a stationary body (a
@@ -110,10 +127,11 @@ void AddObstacle(CrashDescription& d) {
 }  // namespace
 
 ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, const PlannerConfig& config) {
-  Validate(in);
   ImpactConfiguration c;
   c.description = in;
   CrashDescription& d = c.description;
+  Reconcile(d);
+  Validate(d);
   auto note = [&](std::string s) { d.notes.push_back(std::move(s)); };
   std::mt19937_64 rng(seed);
   if (d.vehicles.empty()) throw std::invalid_argument("vehicles: a reconstruction needs a vehicle, the description has none");
@@ -175,9 +193,11 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
   }
   c.type = d.type.value;
   if (c.type == CrashType::kUnknown || !d.type.known()) {
-    c.type = InferType(area_a, area_b, va.movement.value, vb.movement.value, d.road.type.value);
+    const auto course = CourseOf(va, vb);
+    c.type = InferType(area_a, area_b, va.movement.value, vb.movement.value, d.road.type.value, course);
     d.type.Set(c.type, Provenance::kInferred);
-    note("type: not stated; " + std::string(ToString(c.type)) + " from the areas and movements");
+    note("type: not stated; " + std::string(ToString(c.type)) + " from the areas and movements" +
+         (course ? " within the directions of travel" : ""));
   }
   if (c.type == CrashType::kRearEnd && c.struck_area == ImpactArea::kUnknown) c.struck_area = ImpactArea::kRear;
   if ((c.type == CrashType::kHeadOn) && c.struck_area == ImpactArea::kUnknown) c.struck_area = ImpactArea::kFront;
@@ -672,8 +692,8 @@ std::vector<LaneCombination> GatherLaneCombinations(const ImpactConfiguration& c
   // across the path that ended side to side).
   std::vector<CrashType> types{c.type};
   const CrashType by_areas =
-      InferType(c.striker_area, c.struck_area, d.vehicles[static_cast<size_t>(c.striker)].movement.value,
-                d.vehicles[static_cast<size_t>(c.struck)].movement.value, d.road.type.value);
+      TypeFromAreas(c.striker_area, c.struck_area, d.vehicles[static_cast<size_t>(c.striker)].movement.value,
+                    d.vehicles[static_cast<size_t>(c.struck)].movement.value, d.road.type.value);
   if (!c.obstacle && by_areas != c.type && c.striker_area != ImpactArea::kUnknown &&
       c.struck_area != ImpactArea::kUnknown) {
     types.push_back(by_areas);
@@ -965,6 +985,7 @@ PlannedCrash TimeParameterise(const ImpactConfiguration& c, const LaneCombinatio
                   {"imminent_collision_state", ToJson(p.state)},
                   {"description", ToJson(p.impact.description)},
                   {"notes", p.impact.description.notes},
+                  {"warnings", p.impact.description.warnings},
                   {"peak_lateral_accel", p.peak_lateral_accel},
                   {"peak_accel", p.peak_accel},
                   {"peak_jerk", p.peak_jerk},

@@ -61,7 +61,70 @@ TEST(CrashDescriptionTest, BadDescriptionsNameTheFieldAndReason) {
   d.road.lanes_per_direction.Set(9, Provenance::kStated);
   EXPECT_EQ(ErrorOf(d).rfind("road.lanes_per_direction:", 0), 0u);
 
+  d = Pair(CrashType::kRearEnd);
+  d.road.lanes_per_direction.Set(2, Provenance::kStated);
+  d.vehicles[0].lane.Set(3, Provenance::kStated);
+  EXPECT_EQ(ErrorOf(d).rfind("vehicles[0].lane: 3 is not a lane", 0), 0u) << ErrorOf(d);
+
   EXPECT_EQ(ErrorOf(Pair(CrashType::kHeadOn)), "");
+}
+
+// The one warning Reconcile recorded; "" when none.
+std::string WarningOf(CrashDescription& d) {
+  Reconcile(d);
+  EXPECT_LE(d.warnings.size(), 1u);
+  return d.warnings.empty() ? "" : d.warnings.front();
+}
+
+TEST(CrashDescriptionTest, ReconcileSetsTheWeakerFieldAsideAndSaysWhich) {
+  // Stated directions over an inferred type.
+  CrashDescription d = Pair(CrashType::kSideswipeSame);
+  d.type.source = Provenance::kInferred;
+  d.vehicles[0].travel.Set(Compass::kWest, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kNorth, Provenance::kStated);
+  EXPECT_EQ(WarningOf(d).rfind("type: inferred sideswipe_same_direction contradicts the stated directions", 0), 0u)
+      << d.warnings.front();
+  EXPECT_EQ(d.type.value, CrashType::kUnknown);
+  EXPECT_EQ(ErrorOf(d), "");
+
+  // A stated type over an inferred direction.
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[0].travel.Set(Compass::kNorth, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kSouth, Provenance::kInferred);
+  EXPECT_EQ(WarningOf(d).rfind("vehicles[1].travel: inferred south contradicts the stated crash type rear_end", 0), 0u)
+      << d.warnings.front();
+  EXPECT_FALSE(d.vehicles[1].travel.value.has_value());
+  EXPECT_EQ(d.type.value, CrashType::kRearEnd);
+
+  // A stated speed over an inferred stop, a stated stop over an inferred speed.
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[1].movement.Set(Manoeuvre::kStopped, Provenance::kInferred);
+  d.vehicles[1].speed.Set(12.0, Provenance::kStated);
+  EXPECT_EQ(WarningOf(d).rfind("vehicles[1].movement: inferred stopped", 0), 0u);
+  EXPECT_EQ(d.vehicles[1].movement.value, Manoeuvre::kStraight);
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[1].movement.Set(Manoeuvre::kStopped, Provenance::kStated);
+  d.vehicles[1].speed.Set(12.0, Provenance::kInferred);
+  EXPECT_EQ(WarningOf(d).rfind("vehicles[1].speed: inferred", 0), 0u);
+  EXPECT_FALSE(d.vehicles[1].speed.value.has_value());
+
+  // A stated lane widens a defaulted lane count; an inferred lane gives way to a stated count.
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[0].lane.Set(2, Provenance::kStated);
+  EXPECT_EQ(WarningOf(d).rfind("road.lanes_per_direction: defaulted 1 has no lane 2", 0), 0u);
+  EXPECT_EQ(d.road.lanes_per_direction.value, 3);
+  d = Pair(CrashType::kRearEnd);
+  d.road.lanes_per_direction.Set(1, Provenance::kStated);
+  d.vehicles[0].lane.Set(2, Provenance::kInferred);
+  EXPECT_EQ(WarningOf(d).rfind("vehicles[0].lane: inferred 2", 0), 0u);
+  EXPECT_FALSE(d.vehicles[0].lane.value.has_value());
+
+  // Stated against stated is left for Validate to refuse, naming the field.
+  d = Pair(CrashType::kRearEnd);
+  d.vehicles[0].travel.Set(Compass::kNorth, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kSouth, Provenance::kStated);
+  EXPECT_EQ(WarningOf(d), "");
+  EXPECT_EQ(ErrorOf(d).rfind("vehicles[1].travel: south contradicts crash type rear_end", 0), 0u);
 }
 
 TEST(CrashDescriptionTest, JsonRoundTripKeepsValuesAndProvenance) {

@@ -153,6 +153,31 @@ TEST(ReconstructionTest, NarrativeToCheckedScenario) {
   EXPECT_EQ(r.plan.scenario.npcs.front().id, "V1");
 }
 
+TEST(ReconstructionTest, ContradictionsArePlannedWithAWarningUnlessBothAreStated) {
+  // An inferred sideswipe against stated crossing directions: the
+  // directions win, the type is inferred again within them, and it plans.
+  CrashDescription d = Two(CrashType::kSideswipeSame, RoadType::kTJunction, ImpactArea::kFront, ImpactArea::kLeft,
+                           Manoeuvre::kStraight, Manoeuvre::kStraight);
+  d.type.source = Provenance::kInferred;
+  d.vehicles[0].travel.Set(Compass::kWest, Provenance::kStated);
+  d.vehicles[1].travel.Set(Compass::kNorth, Provenance::kStated);
+  const Reconstruction r = Reconstruct(d);
+  EXPECT_TRUE(r.check.success) << r.check.reason;
+  EXPECT_EQ(r.plan.impact.type, CrashType::kAngle);
+  ASSERT_EQ(r.plan.impact.description.warnings.size(), 1u);
+  EXPECT_EQ(r.plan.impact.description.warnings[0].rfind("type: ", 0), 0u);
+  EXPECT_EQ(r.plan.scenario.provenance.at("warnings").size(), 1u);
+
+  // Both stated: refused, naming the field.
+  d.type.source = Provenance::kStated;
+  try {
+    Reconstruct(d);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("vehicles[1].travel: north contradicts", 0), 0u) << e.what();
+  }
+}
+
 TEST(ReconstructionTest, LabelledObjectImpactsAreSingleVehicleCrashes) {
   // A CIREN-style row: one vehicle, a right roadside departure into a tree.
   const nlohmann::json row = nlohmann::json::parse(R"json({

@@ -86,7 +86,8 @@ struct CrashDescription {
   Field<std::string> struck;   // vehicle id of the struck vehicle, or kObjectId
   // Single-vehicle crashes: where the struck object stood.
   Field<ObstaclePlace> obstacle{ObstaclePlace::kRightRoadside};
-  std::vector<std::string> notes;  // what was inferred or drawn, and why
+  std::vector<std::string> notes;     // what was inferred or drawn, and why
+  std::vector<std::string> warnings;  // contradictions Reconcile resolved, each naming the field it set aside
 
   // Index of the vehicle with that id; -1 when there is none.
   int IndexOf(const std::string& id) const;
@@ -95,13 +96,30 @@ struct CrashDescription {
   bool SingleVehicle() const;
 };
 
+// How two directions of travel relate.
+enum class Course { kSame, kOpposite, kCrossing };
+// The relation of two vehicles' directions when both are known.
+std::optional<Course> CourseOf(const VehicleDescription& a, const VehicleDescription& b);
+// Whether a crash type allows that relation: rear-end and sideswipe-same
+// need the same direction, head-on and sideswipe-opposite the opposite one,
+// angle crossing ones; the other types allow any.
+bool TypeFits(CrashType type, Course course);
+
+// Resolves contradictions that involve a field not stated (inferred or
+// defaulted): the weaker field is set aside (an inferred direction, crash
+// type, movement, speed or lane; on a tie the one the planner needs least)
+// and a warning naming it is recorded in `warnings`. Contradictions between
+// stated fields are left for Validate to refuse.
+void Reconcile(CrashDescription& d);
+
 // Throws std::invalid_argument naming the field and the reason when the
 // description cannot describe a crash: no vehicles, duplicate ids,
 // striker/struck not among the vehicles or the same one, impossible speeds
-// (negative, not finite, above 70 m/s), a stated speed contradicting a
-// stopped vehicle, stated directions contradicting the crash type
-// ("vehicles[1].travel: north contradicts crash type rear_end ..."), road
-// attributes outside what a map can be built with.
+// (negative, not finite, above 70 m/s), and stated facts that contradict
+// each other: a stated speed on a vehicle stated as stopped, stated
+// directions contradicting the stated crash type ("vehicles[1].travel:
+// north contradicts crash type rear_end ..."), a stated lane outside the
+// stated lane count; road attributes outside what a map can be built with.
 void Validate(const CrashDescription& d);
 
 nlohmann::json ToJson(const CrashDescription& d);
