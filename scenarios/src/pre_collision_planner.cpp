@@ -310,10 +310,20 @@ struct Party {
   double radius;    // [m] Dubins radius at its speed
 };
 
-double LaneY(const RoadMap& map, Compass travel, int index) {
+// Lane `index` (0 next to the centre line) for `travel`, kept.
+VehiclePath KeepLane(const RoadMap& map, Compass travel, int index) {
   const int id = map.FindLane(travel, false, index);
   if (id < 0) throw std::invalid_argument("road: no such lane");
-  return map.lane(id).centreline.PointAt(0.0).y();
+  return {map.lane(id).centreline, 0.0, std::string(ToString(travel)) + " lane " + std::to_string(index) +
+                                            " keeps its lane", false};
+}
+double LaneY(const RoadMap& map, Compass travel, int index) {
+  return KeepLane(map, travel, index).path.PointAt(0.0).y();
+}
+// Eastbound from lane `from` to lateral position `y_to` on a Dubins curve.
+VehiclePath LeaveLane(const RoadMap& map, int from, double y_to, double x_from, double radius, const std::string& how) {
+  return {DubinsLaneChange(LaneY(map, Compass::kEast, from), y_to, x_from, radius), 0.0,
+          "east lane " + std::to_string(from) + " " + how, true};
 }
 
 // Puts the changer where its front corner (side +1 left, -1 right) reaches
@@ -361,38 +371,27 @@ double AlongSide(ImpactArea keeper_area, double half_length, bool rearward) {
 // Same direction, eastbound on a road with two lanes at least.
 std::pair<VehiclePath, VehiclePath> SameDirectionCorner(const RoadMap& map, const Party& changer, const Party& keeper,
                                                         bool rearward) {
-  const double w = map.spec().lane_width;
-  const double x_from = -20.0 - 2.4 * std::sqrt(changer.radius * w);
-  if (keeper.area == ImpactArea::kRear) {
-    // Pulling out from behind: towards the side its damaged side trails.
-    const int dir = HasRight(changer.area) ? 1 : HasLeft(changer.area) ? -1
-                    : changer.movement == Manoeuvre::kLaneChangeRight ? -1 : 1;
-    const int lane = dir > 0 ? 1 : 0, to = dir > 0 ? 0 : 1;
-    VehiclePath k{map.lane(map.FindLane(Compass::kEast, false, lane)).centreline, 0.0,
-                  "east lane " + std::to_string(lane) + " keeps its lane", false};
-    VehiclePath c{DubinsLaneChange(LaneY(map, Compass::kEast, lane), LaneY(map, Compass::kEast, to), x_from,
-                                   changer.radius),
-                  0.0, "east lane " + std::to_string(lane) + " pulling out " + (dir > 0 ? "left" : "right") +
-                           " from behind, front corner first", true};
-    const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
-    MeetAtFrontCorner(c, k, changer.cls, -dir, 0.0, Vec2(-hl, dir * (hw - 0.3)));
-    return {c, k};
-  }
-  // Into the keeper's lane from the side its damage names.
-  const bool on_left = HasLeft(keeper.area) || (!HasRight(keeper.area) && (HasRight(changer.area) ||
-                                                (!HasLeft(changer.area) &&
-                                                 changer.movement == Manoeuvre::kLaneChangeRight)));
-  const int side = on_left ? -1 : 1;
-  if (!CornerFits(changer.area, side)) throw std::invalid_argument("road: the damaged areas rule out a corner contact");
-  const int lane = on_left ? 0 : 1, to = on_left ? 1 : 0;
-  VehiclePath k{map.lane(map.FindLane(Compass::kEast, false, to)).centreline, 0.0,
-                "east lane " + std::to_string(to) + " keeps its lane", false};
-  VehiclePath c{DubinsLaneChange(LaneY(map, Compass::kEast, lane), LaneY(map, Compass::kEast, to), x_from,
-                                 changer.radius),
-                0.0, "east lane " + std::to_string(lane) + " changing lanes " + (on_left ? "right" : "left") +
-                         ", front corner first", true};
   const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
-  MeetAtFrontCorner(c, k, changer.cls, side, 0.0, Vec2(AlongSide(keeper.area, hl, rearward), on_left ? hw : -hw));
+  const bool from_behind = keeper.area == ImpactArea::kRear;
+  // Pulling out from behind: towards the side the changer's damaged side
+  // trails. Else into the keeper's lane from the side its damage names.
+  const bool moves_left =
+      from_behind ? HasRight(changer.area) || (!HasLeft(changer.area) && changer.movement != Manoeuvre::kLaneChangeRight)
+                  : HasRight(keeper.area) || (!HasLeft(keeper.area) && !HasRight(changer.area) &&
+                                              (HasLeft(changer.area) || changer.movement != Manoeuvre::kLaneChangeRight));
+  const int dir = moves_left ? 1 : -1;
+  const int side = from_behind ? -dir : dir;  // the changer's front corner that touches
+  if (!from_behind && !CornerFits(changer.area, side)) {
+    throw std::invalid_argument("road: the damaged areas rule out a corner contact");
+  }
+  const int from = moves_left ? 1 : 0, to = 1 - from;
+  VehiclePath k = KeepLane(map, Compass::kEast, from_behind ? from : to);
+  VehiclePath c = LeaveLane(map, from, LaneY(map, Compass::kEast, to),
+                            -20.0 - 2.4 * std::sqrt(changer.radius * map.spec().lane_width), changer.radius,
+                            (from_behind ? "pulling out " : "changing lanes ") + std::string(moves_left ? "left" : "right") +
+                                (from_behind ? " from behind" : "") + ", front corner first");
+  const Vec2 target = from_behind ? Vec2(-hl, dir * (hw - 0.3)) : Vec2(AlongSide(keeper.area, hl, rearward), -dir * hw);
+  MeetAtFrontCorner(c, k, changer.cls, side, 0.0, target);
   return {c, k};
 }
 
@@ -403,11 +402,10 @@ std::pair<VehiclePath, VehiclePath> OppositeDirectionCorner(const RoadMap& map, 
   if (!CornerFits(changer.area, 1) || HasRight(keeper.area) || keeper.area == ImpactArea::kRear) {
     throw std::invalid_argument("road: the damaged areas rule out a corner contact");
   }
-  const double w = map.spec().lane_width;
-  VehiclePath k{map.lane(map.FindLane(Compass::kWest, false, 0)).centreline, 0.0, "west lane 0 keeps its lane", false};
-  VehiclePath c{DubinsLaneChange(LaneY(map, Compass::kEast, 0), LaneY(map, Compass::kWest, 0),
-                                 -30.0 - 2.4 * std::sqrt(changer.radius * w), changer.radius),
-                0.0, "east lane 0 drifting over the centre line, front corner first", true};
+  VehiclePath k = KeepLane(map, Compass::kWest, 0);
+  VehiclePath c = LeaveLane(map, 0, LaneY(map, Compass::kWest, 0),
+                            -30.0 - 2.4 * std::sqrt(changer.radius * map.spec().lane_width), changer.radius,
+                            "drifting over the centre line, front corner first");
   const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
   MeetAtFrontCorner(c, k, changer.cls, 1, kPi, Vec2(AlongSide(keeper.area, hl, rearward), hw));
   return {c, k};
@@ -433,16 +431,11 @@ std::pair<VehiclePath, VehiclePath> ObstaclePaths(const RoadMap& map, ObstaclePl
   const double half = kStraightLength / 2;
   const std::string where(ToString(place));
   VehiclePath k{Polyline({Vec2(-half, y), Vec2(half, y)}), half + kObjectX, "object " + where, false, true};
-  VehiclePath a;
-  if (place == ObstaclePlace::kInLane) {
-    a = {map.lane(map.FindLane(Compass::kEast, false, lane)).centreline, 0.0,
-         "east lane " + std::to_string(lane) + " keeps its lane", false};
-  } else {
-    const double x_from = kObjectX - 25.0 - 2.4 * std::sqrt(v.radius * std::abs(y - y0));
-    a = {DubinsLaneChange(y0, y, x_from, v.radius), 0.0,
-         "east lane " + std::to_string(lane) + " leaving the road to the " +
-             (place == ObstaclePlace::kLeftRoadside ? "left" : "right"),
-         true, true};
+  VehiclePath a = KeepLane(map, Compass::kEast, lane);
+  if (place != ObstaclePlace::kInLane) {
+    a = LeaveLane(map, lane, y, kObjectX - 25.0 - 2.4 * std::sqrt(v.radius * std::abs(y - y0)), v.radius,
+                  place == ObstaclePlace::kLeftRoadside ? "leaving the road to the left" : "leaving the road to the right");
+    a.off_road = true;
   }
   if (IsFront(v.area) || v.area == ImpactArea::kUnknown) {
     a.impact_s = a.path.Project(Vec2(kObjectX - hl - HalfLength(v.cls), y)).s;
@@ -509,11 +502,7 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
     return {map.RouteThrough({in, conn, map.lane(conn).to_lane}), 0.0,
             label(travel, index, turn == Turn::kLeft ? "turning left" : "turning right"), false};
   };
-  auto road_lane = [&](Compass travel, int index) -> VehiclePath {
-    const int id = map.FindLane(travel, false, index);
-    if (id < 0) throw std::invalid_argument("road: no such lane");
-    return {map.lane(id).centreline, 0.0, label(travel, index, "keeps its lane"), false};
-  };
+  auto road_lane = [&](Compass travel, int index) { return KeepLane(map, travel, index); };
   VehiclePath pa, pb;
   // A sideswipe's front-corner contact: the struck vehicle is the changer
   // with bit 1, the corner lands towards the keeper's rear with bit 0.

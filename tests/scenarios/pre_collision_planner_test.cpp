@@ -179,6 +179,17 @@ TEST(PreCollisionPlannerTest, DeterministicForASeed) {
   d.vehicles[0].speed = {};
   const PlannedCrash a = PreCollisionPlanner().Plan(d, 9), b = PreCollisionPlanner().Plan(d, 9);
   EXPECT_EQ(ToJson(a.scenario), ToJson(b.scenario));
+  // The front-corner sideswipes and single-vehicle obstacles too.
+  auto pull_out = Two(CrashType::kSideswipeSame, RoadType::kStraight, ImpactArea::kRight, ImpactArea::kRear);
+  pull_out.vehicles[0].speed = {};
+  const auto p1 = PlansWith(pull_out, "front corner first"), p2 = PlansWith(pull_out, "front corner first");
+  ASSERT_FALSE(p1.empty());
+  EXPECT_EQ(ToJson(p1.front().scenario), ToJson(p2.front().scenario));
+  auto one = Two(CrashType::kSingleVehicle, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kUnknown);
+  one.vehicles.resize(1);
+  one.struck = {};
+  one.vehicles[0].speed = {};
+  EXPECT_EQ(ToJson(PreCollisionPlanner().Plan(one, 4).scenario), ToJson(PreCollisionPlanner().Plan(one, 4).scenario));
 }
 
 }  // namespace

@@ -204,6 +204,13 @@ TEST(ReconstructionTest, DevelopmentSetRatesFromLabels) {
   EXPECT_GE(r.Rate("intersection"), 0.98);
   EXPECT_GE(r.Rate("t_junction"), 0.98);
   EXPECT_GE(r.Rate("straight"), 0.98);
+
+  // CIREN, single-vehicle crashes counted in: 20 of 20 (docs/reconstruction.md).
+  const SrrReport c =
+      EvaluateReconstruction(std::string(ACCSIM_SHARED_DIR) + "/data/narratives/ciren", DescriptionSource::kLabels);
+  EXPECT_EQ(c.attempted.at("straight"), 14);
+  EXPECT_EQ(c.single_vehicle.at("straight"), 2);
+  EXPECT_GE(c.Rate("straight"), 0.99) << ToJson(c).dump();
 }
 
 }  // namespace
