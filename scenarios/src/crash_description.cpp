@@ -299,8 +299,7 @@ void Validate(const CrashDescription& d) {
                                   std::to_string(r.lanes_per_direction.value) + " lane(s) per direction");
     }
   }
-  const int a = d.striker.known() ? d.IndexOf(d.striker.value) : -1;
-  const int b = d.struck.known() ? d.IndexOf(d.struck.value) : -1;
+  const auto [a, b] = Pair(d);
   if (d.striker.known() && a < 0) throw std::invalid_argument("striker: no vehicle '" + d.striker.value + "'");
   if (d.struck.known() && b < 0 && d.struck.value != kObjectId) {
     throw std::invalid_argument("struck: no vehicle '" + d.struck.value + "'");

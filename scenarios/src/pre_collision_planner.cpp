@@ -113,7 +113,8 @@ void AddObstacle(CrashDescription& d) {
   const ImpactArea area = d.vehicles[static_cast<size_t>(d.IndexOf(d.striker.value))].impact_area.value;
   if (!d.obstacle.known()) {
     d.obstacle.Set(HasLeft(area) ? ObstaclePlace::kLeftRoadside : ObstaclePlace::kRightRoadside, Provenance::kInferred);
-    note("obstacle: not stated; " + std::string(ToString(d.obstacle.value)) + " (the side the damage faces, else the right)");
+    note("obstacle: not stated; " + std::string(ToString(d.obstacle.value)) +
+         " (the side the damage faces, else the right)");
   }
   VehicleDescription o;
   o.id = std::string(kObjectId);
@@ -134,7 +135,7 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
   Validate(d);
   auto note = [&](std::string s) { d.notes.push_back(std::move(s)); };
   std::mt19937_64 rng(seed);
-  if (d.vehicles.empty()) throw std::invalid_argument("vehicles: a reconstruction needs a vehicle, the description has none");
+  if (d.vehicles.empty()) throw std::invalid_argument("vehicles: a reconstruction needs a vehicle, there is none");
   if (d.SingleVehicle()) {
     AddObstacle(d);
     c.obstacle = true;
@@ -298,11 +299,7 @@ Polyline DubinsLaneChange(double y_from, double y_to, double x_from, double r) {
   return Polyline(pts);
 }
 
-// A sideswipe as investigators code it: a vehicle leaving its lane (the
-// changer) touches the other (the keeper) with the front corner on the side
-// it moves to, on the keeper's side; or, when it pulls out from behind the
-// keeper and the keeper was hit on its back, with the other front corner on
-// the keeper's back beside the corner.
+// A vehicle in a front-corner contact or a single-vehicle crash.
 struct Party {
   VehicleClass cls;
   ImpactArea area;  // as described
@@ -368,17 +365,24 @@ double AlongSide(ImpactArea keeper_area, double half_length, bool rearward) {
   return 0.0;
 }
 
-// Same direction, eastbound on a road with two lanes at least.
+// A sideswipe as investigators code it: a vehicle leaving its lane (the
+// changer) touches the other (the keeper) with the front corner on the side
+// it moves to, on the keeper's side; or, when it pulls out from behind the
+// keeper and the keeper was hit on its back, with the other front corner on
+// the keeper's back beside the corner. Same direction, eastbound on a road
+// with two lanes at least.
 std::pair<VehiclePath, VehiclePath> SameDirectionCorner(const RoadMap& map, const Party& changer, const Party& keeper,
                                                         bool rearward) {
   const double hl = HalfLength(keeper.cls), hw = HalfWidth(keeper.cls);
   const bool from_behind = keeper.area == ImpactArea::kRear;
   // Pulling out from behind: towards the side the changer's damaged side
-  // trails. Else into the keeper's lane from the side its damage names.
+  // trails. Else into the keeper's lane from the side its damage names,
+  // then the side the changer's damage names, then its lane change.
+  const bool says_left = changer.movement != Manoeuvre::kLaneChangeRight;
   const bool moves_left =
-      from_behind ? HasRight(changer.area) || (!HasLeft(changer.area) && changer.movement != Manoeuvre::kLaneChangeRight)
-                  : HasRight(keeper.area) || (!HasLeft(keeper.area) && !HasRight(changer.area) &&
-                                              (HasLeft(changer.area) || changer.movement != Manoeuvre::kLaneChangeRight));
+      from_behind ? HasRight(changer.area) || (!HasLeft(changer.area) && says_left)
+                  : HasRight(keeper.area) ||
+                        (!HasLeft(keeper.area) && !HasRight(changer.area) && (HasLeft(changer.area) || says_left));
   const int dir = moves_left ? 1 : -1;
   const int side = from_behind ? -dir : dir;  // the changer's front corner that touches
   if (!from_behind && !CornerFits(changer.area, side)) {
@@ -386,10 +390,11 @@ std::pair<VehiclePath, VehiclePath> SameDirectionCorner(const RoadMap& map, cons
   }
   const int from = moves_left ? 1 : 0, to = 1 - from;
   VehiclePath k = KeepLane(map, Compass::kEast, from_behind ? from : to);
+  const std::string how = (from_behind ? "pulling out " : "changing lanes ") +
+                          std::string(moves_left ? "left" : "right") + (from_behind ? " from behind" : "");
   VehiclePath c = LeaveLane(map, from, LaneY(map, Compass::kEast, to),
                             -20.0 - 2.4 * std::sqrt(changer.radius * map.spec().lane_width), changer.radius,
-                            (from_behind ? "pulling out " : "changing lanes ") + std::string(moves_left ? "left" : "right") +
-                                (from_behind ? " from behind" : "") + ", front corner first");
+                            how + ", front corner first");
   const Vec2 target = from_behind ? Vec2(-hl, dir * (hw - 0.3)) : Vec2(AlongSide(keeper.area, hl, rearward), -dir * hw);
   MeetAtFrontCorner(c, k, changer.cls, side, 0.0, target);
   return {c, k};
@@ -433,8 +438,9 @@ std::pair<VehiclePath, VehiclePath> ObstaclePaths(const RoadMap& map, ObstaclePl
   VehiclePath k{Polyline({Vec2(-half, y), Vec2(half, y)}), half + kObjectX, "object " + where, false, true};
   VehiclePath a = KeepLane(map, Compass::kEast, lane);
   if (place != ObstaclePlace::kInLane) {
-    a = LeaveLane(map, lane, y, kObjectX - 25.0 - 2.4 * std::sqrt(v.radius * std::abs(y - y0)), v.radius,
-                  place == ObstaclePlace::kLeftRoadside ? "leaving the road to the left" : "leaving the road to the right");
+    const double x_from = kObjectX - 25.0 - 2.4 * std::sqrt(v.radius * std::abs(y - y0));
+    a = LeaveLane(map, lane, y, x_from, v.radius,
+                  std::string("leaving the road to the ") + (place == ObstaclePlace::kLeftRoadside ? "left" : "right"));
     a.off_road = true;
   }
   if (IsFront(v.area) || v.area == ImpactArea::kUnknown) {
