@@ -463,5 +463,11 @@ TEST(NarrativeExtractorTest, AStopOnSeeingTheOtherIsTheAvoidanceNotThePreEvent) 
   EXPECT_EQ(waited.vehicles[0].pre_event.value, Movement::kStopped);
 }
 
+TEST(NarrativeExtractorTest, WithTheRearOfTheOtherIsNotTheStrikersRear) {
+  const auto r = kExtractor.Extract("Vehicle #1 impacted with the rear of Vehicle #2 with its front.");
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
+}
+
 }  // namespace
 }  // namespace accsim
