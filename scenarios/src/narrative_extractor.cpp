@@ -93,8 +93,11 @@ string Normalise(std::string_view in) {
   for (const auto& [re, to] : kOrdinals) s = std::regex_replace(s, re, to);
   // Vehicle references: "vehicle #1", "vehicle no. 2", "veh. 3", "v-1", "unit 2".
   static const regex kVehicle(
-      R"(\b(?:vehicle|veh\.?|unit|v)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|lanes?|year|yr)))");
+      R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))");
   s = std::regex_replace(s, kVehicle, "v$1");
+  // "the first vehicle", "the 2nd car" (ordinals are digits by now).
+  static const regex kOrdinalVehicle(R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b)");
+  s = std::regex_replace(s, kOrdinalVehicle, "v$1");
   // "v1 (v1 - case vehicle)" and "the ford taurus (v1)" are one reference.
   static const regex kRepeat(R"(\bv([1-9])\s*\(\s*v\1\b[^()]{0,40}\))");
   s = std::regex_replace(s, kRepeat, "v$1");
@@ -1207,7 +1210,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     for (const Sentence& s : sentences) {
       if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
       if (s.text.find("limit") == string::npos && s.text.find("posted") == string::npos &&
-          s.text.find("speed zone") == string::npos) {
+          s.text.find(" zone") == string::npos) {
         continue;
       }
       bool found = false;
@@ -1219,13 +1222,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // A value and its conversion in brackets are one limit.
         const string tail = it->suffix().str();
         smatch conv;
-        if (std::regex_search(tail, conv, regex(R"(^\s*\(\s*\d{2,3}\s*(?:kmh|mph)\s*\))"))) {
+        static const regex kConversion(R"(^\s*\(\s*\d{2,3}\s*(?:kmh|mph)\s*\))");
+        if (std::regex_search(tail, conv, kConversion)) {
           skip_until = pos + static_cast<size_t>(it->length(0)) + static_cast<size_t>(conv.length(0));
         }
         if (Has(before.substr(before.size() > 40 ? before.size() - 40 : 0), kAdvisory)) continue;
         if (before.find("limit") == string::npos && before.find("posted") == string::npos &&
             before.find("speed zone") == string::npos && tail.find("limit") == string::npos &&
-            tail.find("posted") == string::npos) {
+            tail.find("posted") == string::npos && tail.rfind(" zone", 0) != 0) {  // "a 45 mph zone"
           continue;
         }
         const bool kmh = (*it)[2].str() == "kmh";
@@ -1406,6 +1410,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
   }
 
+  // A vehicle leaving a driveway or lot before the impact ("pulled out of a
+  // private driveway"): its access is the crash location, and its path
+  // crosses the road's.
+  const bool from_driveway = std::any_of(segments.begin(), segments.end(), [&](const Segment& seg) {
+    return !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative &&
+           LeavesDriveway(seg.text);
+  });
+
   // ---- Crash type: coded critical-event wording, then geometry and movements.
   string coded;
   for (const Sentence& s : sentences) {
@@ -1498,7 +1510,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       type = CrashType::kHeadOn;
     } else if (sb.left || sb.right) {
       type = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction ||
-                     RanTrafficControl(scene)
+                     RanTrafficControl(scene) || from_driveway
                  ? CrashType::kAngle
                  : CrashType::kSideswipeSame;
     } else {
@@ -1579,10 +1591,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
-    const bool from_driveway = std::any_of(segments.begin(), segments.end(), [&](const Segment& seg) {
-      return !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative &&
-             LeavesDriveway(seg.text);
-    });
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
     } else if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {

@@ -469,5 +469,27 @@ TEST(NarrativeExtractorTest, WithTheRearOfTheOtherIsNotTheStrikersRear) {
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
 }
 
+TEST(NarrativeExtractorTest, PoliceStyleVehicleNamesAndSpeedZones) {
+  const auto cars = kExtractor.Extract(
+      "Car 1 was traveling east. Car 2 was traveling north. Car 2 struck the left side of Car 1 in the "
+      "intersection.");
+  ASSERT_EQ(cars.participant_count.value, 2);
+  EXPECT_EQ(cars.crash.striking.value, "V2");
+  EXPECT_EQ(cars.crash.type.value, CrashType::kAngle);
+  const auto ordinals = kExtractor.Extract(
+      "The first vehicle was traveling west when it was struck by the second vehicle, which was turning left.");
+  ASSERT_EQ(ordinals.participant_count.value, 2);
+  EXPECT_EQ(ordinals.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(ordinals.crash.striking.value, "V2");
+  const auto zone = kExtractor.Extract(
+      "Driver 1 was traveling north on Route 9 in a 45 mph zone. Vehicle 2 pulled out of a private driveway and "
+      "Vehicle 1 struck Vehicle 2 on the driver side door. The trip was 3 miles long.");
+  EXPECT_NEAR(zone.road.speed_limit_mps.value, 45 * 0.44704, 1e-9);
+  EXPECT_EQ(zone.road.speed_limit_mps.source, Provenance::kStated);
+  EXPECT_EQ(zone.participant_count.value, 2);  // "3 miles" is no vehicle
+  EXPECT_EQ(zone.crash.location.value, CrashLocation::kDriveway);
+  EXPECT_EQ(zone.crash.type.value, CrashType::kAngle);
+}
+
 }  // namespace
 }  // namespace accsim
