@@ -945,6 +945,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       ReadCoding(seg.text, narrative[vi], other);
     }
   }
+  // "Both vehicles were traveling north": every vehicle the text gives no
+  // direction of its own.
+  static const regex kAllTravel(
+      R"(\b(?:both|all|the 2|the 3) (?:vehicles|cars|units)\b[^.]{0,30}?\b(?:travel\w*|heading|headed|going|proceeding|driving|were)\s+(?:due\s+)?(north|south|east|west)(?:bound)?\b)");
+  for (const Sentence& s : sentences) {
+    smatch all;
+    if ((s.kind == Kind::kNarrative || s.kind == Kind::kStatement) && std::regex_search(s.text, all, kAllTravel)) {
+      for (VehicleRecord& v : r.vehicles) {
+        if (!v.travel.known()) v.travel.Set(CompassWord(all[1].str()), Provenance::kStated);
+      }
+      break;
+    }
+  }
   // Directions stated relative to the other vehicle.
   if (r.vehicles.size() >= 2) {
     for (size_t i = 1; i <= 2; ++i) {
@@ -1350,7 +1363,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
                                 R"((?!\s*(?:side\s+)?of\b))");
     static const regex kStruckIn(
         R"(\b(?:contacted|struck|impacted|hit|stuck)\s+(?:\w+\s+){0,3}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
-    static const regex kItsArea(R"(\b(?:its|it's)\s+)" + kArea + R"(\s+(?:was|were|struck|impacted|contacted|hit))");
+    static const regex kItsArea(R"(\b(?:its|it's)\s+)" + kArea +
+                                R"(\s+(?:was|were|struck|impacted|contacted|hit|sideswiped|collided|scraped))");
     auto note = [&](int v, const string& words) {
       const AreaWords a = ParseArea(words);
       if (v > 0 && a.any() && !area_words.count(v)) area_words[v] = a;

@@ -491,5 +491,17 @@ TEST(NarrativeExtractorTest, PoliceStyleVehicleNamesAndSpeedZones) {
   EXPECT_EQ(zone.crash.type.value, CrashType::kAngle);
 }
 
+TEST(NarrativeExtractorTest, BothVehiclesDirectionAndTheStrikersSideInASideswipe) {
+  const auto r = kExtractor.Extract(
+      "V2 was changing lanes to the left when its left side sideswiped the right side of V1, which was traveling "
+      "in the left lane. Both vehicles were eastbound on the interstate.");
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kEast);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kLeft);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
+}
+
 }  // namespace
 }  // namespace accsim
