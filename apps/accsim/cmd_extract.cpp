@@ -59,7 +59,8 @@ void AddExtractCommands(CLI::App& app) {
   auto e = std::make_shared<ExtractOptions>();
   CLI::App* extract = app.add_subcommand(
       "extract",
-      "Read a crash narrative (police / NHTSA style, mph or km/h) and print its AccidentRecord as JSON "
+      "Read a crash narrative (police / NHTSA style, or a short description such as 'my car was stopped when a "
+      "pickup rear-ended me'; mph or km/h) and print its AccidentRecord as JSON "
       "(schema_version 1; every field says whether it was stated, inferred or defaulted; 'warnings' says what "
       "could not be read)");
   extract->add_option("file", e->input, "Narrative text file, or - for standard input")->required();
