@@ -659,7 +659,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (descriptions.count(ref.vehicle)) continue;
       const string tail = s.text.substr(ref.pos, 200);
       smatch m;
-      if (std::regex_search(tail, m, kDesc) && !Has(m[2].str(), regex(R"(\b(?:male|female|man|woman|driver|year)\b)"))) {
+      static const regex kPersonWords(R"(\b(?:male|female|man|woman|driver|year)\b)");
+      if (std::regex_search(tail, m, kDesc) && !Has(m[2].str(), kPersonWords)) {
         descriptions[ref.vehicle] = m[2].str();
         smatch b;
         const string after = m.suffix().str();
@@ -768,7 +769,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           !Has(after.substr(0, 30), kObjectNoun) &&
           max_v <= 1) {
         unnumbered_other = true;
-        unnumbered_parked = Has(after, regex(R"(\bparked\b|\bunoccupied\b)"));
+        static const regex kParkedWord(R"(\bparked\b|\bunoccupied\b)");
+        unnumbered_parked = Has(after, kParkedWord);
       }
     }
   }
@@ -935,9 +937,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         v.speed_unit.Set(kmh ? "km/h" : "mph", Provenance::kStated);
       }
     }
+    static const regex kParkedOnly(R"(\bparked\b)");
     if (kind == Kind::kNarrative && pre_impact && !seg.perceived) {
       ReadMovement(seg.text, narrative[vi]);
-    } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, regex(R"(\bparked\b)")))) {
+    } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, kParkedOnly))) {
       ReadMovement(seg.text, statement[vi]);
     } else if (kind == Kind::kCoding) {
       MovementEvidence* other = nullptr;
@@ -1058,8 +1061,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // "lane 2" / "the 2 lanes to the left" are not road descriptions; "2-lane", "2 lane road" are.
         const string after = it->suffix().str().substr(0, 40);
         const string before = s.text.substr(0, static_cast<size_t>(it->position()));
-        if (Has(after, regex(R"(^\s*(?:to the|of the|lines?))"))) continue;
-        if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), regex(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)"))) continue;
+        static const regex kNotARoadAfter(R"(^\s*(?:to the|of the|lines?))");
+        if (Has(after, kNotARoadAfter)) continue;
+        static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)");
+        if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), kNotARoadBefore)) continue;
         add(*it, static_cast<size_t>(it->position()), std::stoi((*it)[1].str()), 0, 0);
       }
     }
@@ -1121,8 +1126,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (!directional && rs.directional) directional = rs.directional;
       }
       static const regex kOneWaySentence(R"(\boneway\b)");
+      static const regex kOtherRoadPhrase(R"(\b2[- ]way\b|\band (?:a|an)\b)");
       if (!one_way && v1_way == 0 && Has(sentences[best->sentence].text, kOneWaySentence) &&
-          !Has(sentences[best->sentence].text, regex(R"(\b2[- ]way\b|\band (?:a|an)\b)"))) {
+          !Has(sentences[best->sentence].text, kOtherRoadPhrase)) {
         one_way = true;
       }
       if (one_way) {
@@ -1142,7 +1148,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         r.road.lanes_total.Set(2 * directional, Provenance::kInferred);
       }
     }
-    if (!best && Has(scene, kOneWayHere) && !Has(scene, regex(R"(\b2[- ]way\b)"))) {
+    static const regex kTwoWayWord(R"(\b2[- ]way\b)");
+    if (!best && Has(scene, kOneWayHere) && !Has(scene, kTwoWayWord)) {
       r.road.one_way.Set(true, Provenance::kStated);
     }
     static const regex kDivided(R"(\bdivided\b|\bmedian\b|\bdivided highway\b|\bbarrier wall\b|\binterstate\b|\bfreeway\b)");
@@ -1180,31 +1187,44 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   }
   static const regex kIce(R"(\b(?:icy|ice|frost|black ice|frozen)\b)");
   static const regex kSnow(R"(\bsnow(?:y|ing|ed| covered)?\b|\bslush)");
+  static const regex kSnowSurface(R"(\b(?:snow|slush)[a-z ]{0,20}(?:covered|road|surface|packed)|\broad\w* (?:was |were )?snow)");
+  static const regex kRain(R"(\brain(?:ing|y)?\b|\bdrizzl)");
+  static const regex kFog(R"(\bfog(?:gy)?\b|\bmist)");
+  static const regex kCloudy(R"(\bcloudy\b|\bovercast\b)");
+  static const regex kClear(R"(\bclear\b|\bsunny\b)");
+  static const regex kDarkLighted(R"(\bdark(?:,| but| and)? (?:lighted|lit|illuminated)|\bstreet ?lights?\b|\broadway was illuminated)");
+  static const regex kDark(R"(\bdark\b|\bnight\b|\bunlighted\b|\bdarkness\b)");
+  static const regex kDusk(R"(\bdusk\b)");
+  static const regex kDawn(R"(\bdawn\b)");
+  static const regex kDaylight(R"(\bdaylight\b|\bdaytime\b)");
+  static const regex kUphill(R"(\buphill\b|\bupgrade\b|\bup a hill\b)");
+  static const regex kDownhill(R"(\bdownhill\b|\bdowngrade\b|\bdown (?:a |the )?hill\b|\bgrade of -|\b-\s?\d+(?:\.\d+)?\s?% grade)");
+  static const regex kLevel(R"(\blevel\b|\bno grade\b|\bflat\b)");
   static const regex kWet(R"(\bwet\b|\braining\b|\brain\b|\bdamp\b)");
   static const regex kDry(R"(\bdry\b)");
   if (Has(scene, kIce)) r.road.surface.Set(Surface::kIce, Provenance::kStated);
-  else if (Has(scene, regex(R"(\b(?:snow|slush)[a-z ]{0,20}(?:covered|road|surface|packed)|\broad\w* (?:was |were )?snow)"))) r.road.surface.Set(Surface::kSnow, Provenance::kStated);
+  else if (Has(scene, kSnowSurface)) r.road.surface.Set(Surface::kSnow, Provenance::kStated);
   else if (Has(scene, kWet)) r.road.surface.Set(Surface::kWet, Provenance::kStated);
   else if (Has(scene, kDry)) r.road.surface.Set(Surface::kDry, Provenance::kStated);
-  if (Has(scene, regex(R"(\brain(?:ing|y)?\b|\bdrizzl)"))) r.road.weather.Set("rain", Provenance::kStated);
+  if (Has(scene, kRain)) r.road.weather.Set("rain", Provenance::kStated);
   else if (Has(scene, kSnow)) r.road.weather.Set("snow", Provenance::kStated);
-  else if (Has(scene, regex(R"(\bfog(?:gy)?\b|\bmist)"))) r.road.weather.Set("fog", Provenance::kStated);
-  else if (Has(scene, regex(R"(\bcloudy\b|\bovercast\b)"))) r.road.weather.Set("cloudy", Provenance::kStated);
-  else if (Has(scene, regex(R"(\bclear\b|\bsunny\b)"))) r.road.weather.Set("clear", Provenance::kStated);
-  if (Has(scene, regex(R"(\bdark(?:,| but| and)? (?:lighted|lit|illuminated)|\bstreet ?lights?\b|\broadway was illuminated)"))) {
+  else if (Has(scene, kFog)) r.road.weather.Set("fog", Provenance::kStated);
+  else if (Has(scene, kCloudy)) r.road.weather.Set("cloudy", Provenance::kStated);
+  else if (Has(scene, kClear)) r.road.weather.Set("clear", Provenance::kStated);
+  if (Has(scene, kDarkLighted)) {
     r.road.lighting.Set("dark_lighted", Provenance::kStated);
-  } else if (Has(scene, regex(R"(\bdark\b|\bnight\b|\bunlighted\b|\bdarkness\b)"))) {
+  } else if (Has(scene, kDark)) {
     r.road.lighting.Set("dark", Provenance::kStated);
-  } else if (Has(scene, regex(R"(\bdusk\b)"))) {
+  } else if (Has(scene, kDusk)) {
     r.road.lighting.Set("dusk", Provenance::kStated);
-  } else if (Has(scene, regex(R"(\bdawn\b)"))) {
+  } else if (Has(scene, kDawn)) {
     r.road.lighting.Set("dawn", Provenance::kStated);
-  } else if (Has(scene, regex(R"(\bdaylight\b|\bdaytime\b)"))) {
+  } else if (Has(scene, kDaylight)) {
     r.road.lighting.Set("daylight", Provenance::kStated);
   }
-  if (Has(scene, regex(R"(\buphill\b|\bupgrade\b|\bup a hill\b)"))) r.road.grade.Set("uphill", Provenance::kStated);
-  else if (Has(scene, regex(R"(\bdownhill\b|\bdowngrade\b|\bdown (?:a |the )?hill\b|\bgrade of -|\b-\s?\d+(?:\.\d+)?\s?% grade)"))) r.road.grade.Set("downhill", Provenance::kStated);
-  else if (Has(scene, regex(R"(\blevel\b|\bno grade\b|\bflat\b)"))) r.road.grade.Set("level", Provenance::kStated);
+  if (Has(scene, kUphill)) r.road.grade.Set("uphill", Provenance::kStated);
+  else if (Has(scene, kDownhill)) r.road.grade.Set("downhill", Provenance::kStated);
+  else if (Has(scene, kLevel)) r.road.grade.Set("level", Provenance::kStated);
 
   // Speed limit: the posted limit of V1's road.
   {
@@ -1382,11 +1402,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (std::regex_search(s, am, kWithIts)) note(striker, am[1].str());
     if (std::regex_search(s, am, kStruckIn)) note(struck, am[1].str());
     if (std::regex_search(s, am, kItsArea)) note(passive ? struck : striker, am[1].str());
-    if (Has(s, regex(R"(\bhead[- ]on\b)"))) {
+    static const regex kHeadOnPhrase(R"(\bhead[- ]on\b)");
+    if (Has(s, kHeadOnPhrase)) {
       note(striker, "front");
       note(struck, "front");
     }
-    if (Has(s, regex(R"(\brear[- ]end(?:ed|ing)?\b)"))) {
+    static const regex kRearEndPhrase(R"(\brear[- ]end(?:ed|ing)?\b)");
+    if (Has(s, kRearEndPhrase)) {
       note(striker, "front");
       note(struck, "rear");
     }
@@ -1398,7 +1420,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         smatch tm;
         static const regex kHitIn(R"(\b(?:hit|struck|impacted|contacted)\s+(?:him|her|them|it|v[1-9])\s+(?:in|on)\s+the\s+)" + kArea);
         if (std::regex_search(t, tm, kHitIn)) note(struck, tm[1].str());
-        if (std::regex_search(t, tm, regex(R"(\bin the door\b)"))) note(struck, "left");
+        static const regex kInTheDoor(R"(\bin the door\b)");
+        if (std::regex_search(t, tm, kInTheDoor)) note(struck, "left");
       }
     }
   } else if (r.participant_count.known()) {
@@ -1464,12 +1487,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
                                        b->movement.value == Movement::kChangingLanes ||
                                        a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging;
     const bool struck_plain_rear = sb.rear && !sb.left && !sb.right;
-    const bool rear_end_coded =
-        Has(coded, regex(R"(\bother vehicle stopped|\bin lane,? (?:other vehicle )?stopped|same direction (?:with|at) (?:a )?higher speed|same direction while decelerating|same direction,? (?:with )?(?:lower|slower)|traveling in same direction while|other (?:motor )?vehicle (?:in lane )?(?:was )?stopped)"));
-    const bool into_path_coded = Has(coded, regex(R"(\bturning into (?:the )?(?:same|opposite) direction)"));
-    const bool across_coded = Has(coded, regex(R"(\bfrom crossing street,? across path|\bcrossing street,? across)"));
-    const bool opposite_coded = Has(coded, regex(R"(\bfrom (?:the )?opposite direction|\btraveling in (?:the )?opposite direction)"));
-    const bool adjacent_coded = Has(coded, regex(R"(\bfrom (?:the )?adjacent lane|\bsame direction\)? ?-? ?over (?:the )?(?:left|right) lane line)"));
+    static const regex kRearEndCoded(R"(\bother vehicle stopped|\bin lane,? (?:other vehicle )?stopped|same direction (?:with|at) (?:a )?higher speed|same direction while decelerating|same direction,? (?:with )?(?:lower|slower)|traveling in same direction while|other (?:motor )?vehicle (?:in lane )?(?:was )?stopped)");
+    const bool rear_end_coded = Has(coded, kRearEndCoded);
+    static const regex kIntoPathCoded(R"(\bturning into (?:the )?(?:same|opposite) direction)");
+    const bool into_path_coded = Has(coded, kIntoPathCoded);
+    static const regex kAcrossCoded(R"(\bfrom crossing street,? across path|\bcrossing street,? across)");
+    const bool across_coded = Has(coded, kAcrossCoded);
+    static const regex kOppositeCoded(R"(\bfrom (?:the )?opposite direction|\btraveling in (?:the )?opposite direction)");
+    const bool opposite_coded = Has(coded, kOppositeCoded);
+    static const regex kAdjacentCoded(R"(\bfrom (?:the )?adjacent lane|\bsame direction\)? ?-? ?over (?:the )?(?:left|right) lane line)");
+    const bool adjacent_coded = Has(coded, kAdjacentCoded);
     // A turner from a side road, driveway or parking lot enters the other's
     // path (turn into path); one turning off the road crosses it (turn across path).
     static const regex kFromSide(
@@ -1605,9 +1632,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
+    static const regex kIntersectionWord(R"(\bintersection\b)");
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
-    } else if (Has(impact_text, regex(R"(\bintersection\b)")) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
+    } else if (Has(impact_text, kIntersectionWord) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
@@ -1627,15 +1655,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   {
     static const regex kAsks(R"(\b(?:view|views|viewed|viewpoint|camera|perspective|angle|shot|render|show|video|seen|watch)\b)");
     if (Has(norm, kAsks)) {
+      static const regex kOverheadView(R"(\bbird'?s[- ]eye|\boverhead\b|\btop[- ]down\b|\baerial\b|\bfrom above\b)");
+      static const regex kBehindView(R"(\b(?:from\s+)?behind\s+v([1-9])\b|\bfollowing\s+v([1-9])\b|\bchase\b)");
+      static const regex kDriverView(R"(\b(?:driver'?s?|dash ?cam|first[- ]person|inside|cockpit)\b[^.]{0,30}?(?:v([1-9]))?)");
+      static const regex kSideView(R"(\bfrom the side\b|\bside view\b|\bbroadside view\b)");
       smatch m;
-      if (Has(norm, regex(R"(\bbird'?s[- ]eye|\boverhead\b|\btop[- ]down\b|\baerial\b|\bfrom above\b)"))) {
+      if (Has(norm, kOverheadView)) {
         r.camera_hint.Set("overhead", Provenance::kStated);
-      } else if (std::regex_search(norm, m, regex(R"(\b(?:from\s+)?behind\s+v([1-9])\b|\bfollowing\s+v([1-9])\b|\bchase\b)"))) {
+      } else if (std::regex_search(norm, m, kBehindView)) {
         r.camera_hint.Set("behind V" + (m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : string("1")),
                           Provenance::kStated);
-      } else if (std::regex_search(norm, m, regex(R"(\b(?:driver'?s?|dash ?cam|first[- ]person|inside|cockpit)\b[^.]{0,30}?(?:v([1-9]))?)"))) {
+      } else if (std::regex_search(norm, m, kDriverView)) {
         r.camera_hint.Set("driver V" + (m[1].matched ? m[1].str() : string("1")), Provenance::kStated);
-      } else if (Has(norm, regex(R"(\bfrom the side\b|\bside view\b|\bbroadside view\b)"))) {
+      } else if (Has(norm, kSideView)) {
         r.camera_hint.Set("side", Provenance::kStated);
       }
     }
