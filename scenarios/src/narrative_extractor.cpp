@@ -417,7 +417,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
-      R"((?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)back(?:ed|ing)\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
+      R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
   static const regex kPass(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b)");
   static const regex kSlow(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b)");
   static const regex kStraight(

@@ -503,5 +503,13 @@ TEST(NarrativeExtractorTest, BothVehiclesDirectionAndTheStrikersSideInASideswipe
   EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
 }
 
+TEST(NarrativeExtractorTest, BackingIsAVehiclesQueuedTrafficIsNot) {
+  const auto r = kExtractor.Extract(
+      "V1 was backing out of a parking space when its rear struck the left side of V2, which was traveling "
+      "through the lot. Traffic was backed up on the street.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kBacking);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
