@@ -418,7 +418,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
       R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
-  static const regex kPass(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b)");
+  static const regex kPass(
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b)");
   static const regex kSlow(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
@@ -748,6 +749,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         impact = i;
         break;
       }
+    }
+  }
+
+  // "... when they collided in the intersection; the front of v1 hit the
+  // right side of v2": a contact that names no vehicle after its verb is
+  // told again, with the roles, in the next sentence.
+  if (impact + 1 < sentences.size()) {
+    const Sentence& s = sentences[impact];
+    smatch vm;
+    if (std::regex_search(s.text, vm, kContact)) {
+      const size_t verb_end = static_cast<size_t>(vm.position() + vm.length());
+      const bool object_named = std::any_of(s.refs.begin(), s.refs.end(), [&](const Ref& ref) { return ref.pos > verb_end; });
+      const Sentence& next = sentences[impact + 1];
+      std::set<int> distinct;
+      for (const Ref& ref : next.refs) distinct.insert(ref.vehicle);
+      if (!object_named && next.kind == Kind::kNarrative && distinct.size() >= 2 && Has(next.text, kContact)) ++impact;
     }
   }
 

@@ -511,5 +511,23 @@ TEST(NarrativeExtractorTest, BackingIsAVehiclesQueuedTrafficIsNot) {
   EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, TheyCollidedThenTheRolesInTheNextSentence) {
+  const auto r = kExtractor.Extract(
+      "Vehicle 1 was traveling south at 50 mph and Vehicle 2 was traveling east at 30 mph when they collided in "
+      "the intersection; the front of Vehicle 1 hit the right side of Vehicle 2.");
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+}
+
+TEST(NarrativeExtractorTest, AttemptingToPassIsPassing) {
+  const auto r = kExtractor.Extract(
+      "V2 was attempting to pass V1 on the left when V1 began a left turn into a driveway. The front of V2 struck "
+      "the left side of V1.");
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kPassing);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+}
+
 }  // namespace
 }  // namespace accsim
