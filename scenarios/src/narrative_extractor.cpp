@@ -124,7 +124,9 @@ Numbered NameUnnumberedVehicles(const string& s) {
       R"((car|sedan|coupe|hatchback|wagon|suv|jeep|pickup(?: truck)?|truck|van|minivan|motorcycle|motorbike|bus|tractor-trailer|semi|taxi|cab|vehicle))";
   // Group 1: the phrase without its article (noun included); group 2: the noun.
   static const regex kMine(R"(\bmy\s+((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
-  static const regex kIntro(R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun + R"()\b)");
+  // "a red suv", "another car", and a model year: "a 2010 honda accord".
+  static const regex kIntro(R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
+                            R"()\b|\b(?:a|an)\s+((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+(?!was\b|that\b|which\b|who\b|and\b|lost\b|left\b)[a-z][a-z0-9-]*){0,2}))");
   static const regex kFirstPerson(R"(\b(?:i|me)\b)");
   Numbered out{s, {}};
   std::map<string, int> owner;  // head noun -> vehicle, 0 when two share it
@@ -142,11 +144,13 @@ Numbered NameUnnumberedVehicles(const string& s) {
   for (auto it = std::sregex_iterator(out.text.cbegin(), out.text.cend(), kIntro);
        it != std::sregex_iterator() && next <= 9; ++it) {
     const smatch& im = *it;
-    const string head = head_of(im[2].str());
+    const bool by_year = im[3].matched;
+    const string phrase = by_year ? im[3].str() : im[1].str();
+    const string head = by_year ? im[4].str() : head_of(im[2].str());
     if (head == "vehicle" && im.str().rfind("another", 0) != 0) continue;  // "a vehicle" is too vague to count
     rebuilt.append(from, im[0].first);
     rebuilt += "v" + std::to_string(next);
-    out.descriptions[next] = im[1].str();
+    out.descriptions[next] = phrase;
     owner[head] = owner.count(head) ? 0 : next;
     ++next;
     from = im[0].second;
@@ -967,13 +971,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   }
   // "Both vehicles were traveling north": every vehicle the text gives no
   // direction of its own.
+  // So does a list of them: "v1, v2 and v3 were northbound".
   static const regex kAllTravel(
-      R"(\b(?:both|all|the 2|the 3) (?:vehicles|cars|units)\b[^.]{0,30}?\b(?:travel\w*|heading|headed|going|proceeding|driving|were)\s+(?:due\s+)?(north|south|east|west)(?:bound)?\b)");
+      R"(\b(?:(?:both|all|the 2|the 3) (?:vehicles|cars|units)|(v[1-9](?:\s*,\s*v[1-9])*,?\s+and\s+v[1-9]))\b[^.]{0,30}?\b(?:travel\w*|heading|headed|going|proceeding|driving|were)\s+(?:due\s+)?(north|south|east|west)(?:bound)?\b)");
   for (const Sentence& s : sentences) {
     smatch all;
     if ((s.kind == Kind::kNarrative || s.kind == Kind::kStatement) && std::regex_search(s.text, all, kAllTravel)) {
-      for (VehicleRecord& v : r.vehicles) {
-        if (!v.travel.known()) v.travel.Set(CompassWord(all[1].str()), Provenance::kStated);
+      std::set<int> listed;
+      const string list = all[1].str();
+      for (const Ref& ref : RefsIn(list)) listed.insert(ref.vehicle);
+      for (size_t i = 0; i < r.vehicles.size(); ++i) {
+        VehicleRecord& v = r.vehicles[i];
+        const bool named = listed.empty() || listed.count(static_cast<int>(i) + 1);
+        if (named && !v.travel.known()) v.travel.Set(CompassWord(all[2].str()), Provenance::kStated);
       }
       break;
     }
@@ -1345,8 +1355,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const bool passive = Has(s.substr(0, std::min(s.size(), verb_pos + 20)), kPassive);
     const std::vector<Ref>& refs = sentences[impact].refs;
     int object = 0, subject = 0;
+    // "struck a pole with the front of v1": the instrument is the striker's own.
+    static const regex kInstrument(R"(\b(?:with|using)\s+(?:the|its)\s+[a-z -]{2,30}?\s+of\s+(?:the\s+)?$)");
     for (const Ref& ref : refs) {
-      if (ref.pos > verb_pos) {
+      if (ref.pos > verb_pos && !Has(s.substr(verb_pos, ref.pos - verb_pos), kInstrument)) {
         object = ref.vehicle;
         break;
       }
@@ -1534,6 +1546,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kHeadOnWord(R"(\bhead[- ]on\b)");
     static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
     const bool front_to_front = sa.front && (sb.front || !sb.any());
+    // Paths that cross: a junction, a vehicle running a sign or light, or one
+    // pulling out of a drive.
+    const bool crossing_paths = r.road.kind.value == RoadKind::kIntersection ||
+                                r.road.kind.value == RoadKind::kTJunction || RanTrafficControl(scene) || from_driveway;
     if (const auto from_coding =
             CrashTypeFromCoding(coded, turner != nullptr, Has(impact_text, kLaneChangeNow), front_to_front)) {
       type = *from_coding;
@@ -1567,10 +1583,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else if (sa.front && sb.front) {
       type = CrashType::kHeadOn;
     } else if (sb.left || sb.right) {
-      type = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction ||
-                     RanTrafficControl(scene) || from_driveway
-                 ? CrashType::kAngle
-                 : CrashType::kSideswipeSame;
+      type = crossing_paths ? CrashType::kAngle : CrashType::kSideswipeSame;
+    } else if (crossing_paths && (sa.front || !sa.any())) {
+      type = CrashType::kAngle;  // "struck by a pickup that ran the red light"
     } else {
       type_src = Provenance::kDefaulted;
     }

@@ -529,5 +529,33 @@ TEST(NarrativeExtractorTest, AttemptingToPassIsPassing) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
 }
 
+TEST(NarrativeExtractorTest, ModelYearIntroductionsAndTheStrikersOwnFront) {
+  const auto pole = kExtractor.Extract(
+      "The driver of a 2010 Honda Accord lost control on a wet curve, left the road to the right and struck a "
+      "utility pole with the front of the car.");
+  ASSERT_EQ(pole.participant_count.value, 1);
+  EXPECT_EQ(pole.vehicles[0].description.value, "2010 honda accord");
+  EXPECT_EQ(pole.crash.striking.value, "V1");
+  EXPECT_EQ(pole.crash.struck.value, "object");
+  EXPECT_EQ(pole.crash.type.value, CrashType::kSingleVehicle);
+  const auto light = kExtractor.Extract(
+      "A 2004 Ford Taurus was traveling north when it was struck by a 2008 Chevrolet Silverado pickup that ran "
+      "the red light.");
+  ASSERT_EQ(light.participant_count.value, 2);
+  EXPECT_EQ(light.vehicles[1].vehicle_class.value, VehicleClass::kPickup);
+  EXPECT_EQ(light.crash.striking.value, "V2");
+  EXPECT_EQ(light.crash.type.value, CrashType::kAngle);
+  EXPECT_EQ(light.crash.location.value, CrashLocation::kJunction);
+}
+
+TEST(NarrativeExtractorTest, AListOfVehiclesSharesADirection) {
+  const auto r = kExtractor.Extract(
+      "V1, V2 and V3 were northbound in lane one. V3 stopped for traffic. V2 stopped behind V3. V1 struck the "
+      "rear of V2, pushing V2 into the rear of V3.");
+  ASSERT_EQ(r.vehicles.size(), 3u);
+  for (const auto& v : r.vehicles) EXPECT_EQ(v.travel.value, Compass::kNorth) << v.id;
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
+
 }  // namespace
 }  // namespace accsim
