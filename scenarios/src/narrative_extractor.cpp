@@ -580,7 +580,7 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
 // crash happened on 15. Unnamed classes get none.
 std::optional<double> TypicalLimitMph(const string& scene) {
   static const std::array<std::pair<regex, double>, 7> kClasses = {{
-      {regex(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b)"), 70.0},
+      {regex(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b|\bi-\d{1,3}\b)"), 70.0},
       {regex(R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)"), 15.0},
       {regex(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)"), 25.0},
       {regex(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)"), 55.0},
