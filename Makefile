@@ -1,6 +1,6 @@
 # accsim front end. Every target installs what is missing first and is idempotent.
 BUILD_DIR ?= build
-SAN_DIR   ?= build-asan
+SAN_DIR   ?= build-sanitize
 JOBS      ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
@@ -13,7 +13,7 @@ help:
 	@echo "make demo     the main job with bundled defaults"
 	@echo "make test     build and run every test (ctest, then pytest)"
 	@echo "make bench    print the benchmarks (accsim bench, Google Benchmark)"
-	@echo "make sanitize build with ASan/UBSan and run the C++ tests"
+	@echo "make sanitize build with clang + ASan/UBSan and run the C++ tests and the extractor fuzzer"
 	@echo "make fuzz     libFuzzer on the narrative extractor for FUZZ_SECONDS (clang, ASan/UBSan)"
 
 deps:
@@ -42,7 +42,8 @@ bench: build venv
 	@if [ -f scripts/bench-python.sh ]; then bash scripts/bench-python.sh; fi
 
 sanitize: deps
-	@cmake -S . -B $(SAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCSIM_SANITIZE=ON -DACCSIM_BUILD_BENCH=OFF -DACCSIM_BUILD_PYTHON=OFF > /dev/null
+	@CC=clang-14 CXX=clang++-14 cmake -S . -B $(SAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCSIM_SANITIZE=ON \
+	  -DACCSIM_BUILD_FUZZ=ON -DACCSIM_BUILD_BENCH=OFF -DACCSIM_BUILD_PYTHON=OFF > /dev/null
 	@cmake --build $(SAN_DIR) -j $(JOBS)
 	@cd $(SAN_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 

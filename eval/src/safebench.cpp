@@ -105,7 +105,8 @@ std::string ToMarkdown(const std::vector<EvaluationReport>& reports) {
     }
     os << " " << episodes << " |\n";
   };
-  for (const auto& [key, unused] : reports.front().cells) {
+  for (const auto& cell : reports.front().cells) {
+    const auto& key = cell.first;
     row(key, [&](const EvaluationReport& r) {
       const auto it = r.cells.find(key);
       return it == r.cells.end() ? SafetyMetrics{} : it->second;
