@@ -1409,7 +1409,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kVOn(R"(\bv([1-9])\s+(?:(?!v[1-9]\b)\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
     // "with its front" is the striker's; "with the rear of v2" names v2's.
     static const regex kWithIts(R"(\b(?:with|using)\s+(?:its|it's|the|his|her|their)\s+)" + kArea +
-                                R"((?!\s*(?:side\s+)?of\b))");
+                                R"(\b(?!\s*(?:side\s+)?of\b))");
     static const regex kStruckIn(
         R"(\b(?:contacted|struck|impacted|hit|stuck)\s+(?:\w+\s+){0,3}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
     static const regex kItsArea(R"(\b(?:its|it's)\s+)" + kArea +

@@ -467,6 +467,9 @@ TEST(NarrativeExtractorTest, WithTheRearOfTheOtherIsNotTheStrikersRear) {
   const auto r = kExtractor.Extract("Vehicle #1 impacted with the rear of Vehicle #2 with its front.");
   EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
+  const auto side = kExtractor.Extract("Vehicle #1 impacted with the left side of Vehicle #2 with its front.");
+  EXPECT_EQ(side.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(side.crash.struck_area.value, DamageArea::kLeft);
 }
 
 TEST(NarrativeExtractorTest, PoliceStyleVehicleNamesAndSpeedZones) {
