@@ -133,6 +133,43 @@ void AddReconstructCommands(CLI::App& app) {
       for (const auto& f : r.failures) std::printf("  %s\n", f.c_str());
     }
   });
+
+  struct SweepOptions {
+    uint64_t seed = 0;
+    int seeds = 4;
+    bool json = false, verbose = false;
+  };
+  auto w = std::make_shared<SweepOptions>();
+  CLI::App* sweep = app.add_subcommand(
+      "sweep-reconstruction",
+      "Reconstruct described crash configurations no report set covers in full: every road type x crash type with "
+      "the movements and damaged areas such reports give, vehicle classes rotated by seed, directions and speeds "
+      "drawn; the rate per road type and crash type");
+  sweep->add_option("--seed", w->seed, "First seed")->capture_default_str();
+  sweep->add_option("--seeds", w->seeds, "Number of seeds (each one sweeps every configuration)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  sweep->add_flag("--json", w->json, "Print the rates as JSON");
+  sweep->add_flag("--verbose", w->verbose, "List the reason for each failure");
+  sweep->callback([w] {
+    const SrrReport r = SweepReconstruction(w->seed, w->seeds);
+    if (w->json) {
+      std::cout << ToJson(r).dump(2) << "\n";
+      return;
+    }
+    int ok_all = 0;
+    std::printf("Reconstruction sweep, seeds %llu..%llu (%d descriptions)\n",
+                static_cast<unsigned long long>(w->seed), static_cast<unsigned long long>(w->seed + w->seeds - 1), r.n);
+    for (const auto& [group, n] : r.attempted) {
+      const int ok = r.succeeded.count(group) ? r.succeeded.at(group) : 0;
+      ok_all += ok;
+      std::printf("  %-40s %6.2f%%  (%d of %d)\n", group.c_str(), 100.0 * r.Rate(group), ok, n);
+    }
+    std::printf("  %-40s %6.2f%%  (%d of %d)\n", "all", r.n ? 100.0 * ok_all / r.n : 0.0, ok_all, r.n);
+    if (w->verbose || r.failures.size() <= 10) {
+      for (const auto& f : r.failures) std::printf("  %s\n", f.c_str());
+    }
+  });
 }
 
 }  // namespace accsim::cli

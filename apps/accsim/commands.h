@@ -19,6 +19,6 @@ void AddBenchCommand(CLI::App& app);
 void AddGenerateSuiteCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
 void AddExtractCommands(CLI::App& app);  // extract, eval-extraction
-void AddReconstructCommands(CLI::App& app);  // reconstruct, eval-reconstruction
+void AddReconstructCommands(CLI::App& app);  // reconstruct, eval-reconstruction, sweep-reconstruction
 
 }  // namespace accsim::cli

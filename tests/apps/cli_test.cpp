@@ -85,12 +85,22 @@ TEST(CliTest, BadInputGetsAClearErrorAndExitCode) {
   EXPECT_NE(r.out.find("malformed JSON"), std::string::npos) << r.out;
 
   r = RunCli("simulate " + Example("lane_changing") + " --ego sideways");
-  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(r.status, 2);  // a bad flag is a usage error like any other
   EXPECT_NE(r.out.find("--ego"), std::string::npos) << r.out;
 
   r = RunCli("simulate /no/such/file.json");
-  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("/no/such/file.json"), std::string::npos) << r.out;
+}
+
+TEST(CliTest, SweepReconstructionPrintsRatesAndRefusesZeroSeeds) {
+  Result r = RunCli("sweep-reconstruction --seeds 1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("straight/rear_end"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(27 descriptions)"), std::string::npos) << r.out;
+  r = RunCli("sweep-reconstruction --seeds 0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("--seeds"), std::string::npos) << r.out;
 }
 
 TEST(CliTest, WritesCollisionVideoAndImage) {

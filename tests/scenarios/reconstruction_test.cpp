@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <set>
 
 #include "accsim/scenarios/labelled_case.h"
 #include "accsim/scenarios/narrative_extractor.h"
@@ -211,6 +214,64 @@ TEST(ReconstructionTest, DevelopmentSetRatesFromLabels) {
   EXPECT_EQ(c.attempted.at("straight"), 14);
   EXPECT_EQ(c.single_vehicle.at("straight"), 2);
   EXPECT_GE(c.Rate("straight"), 0.99) << ToJson(c).dump();
+}
+
+TEST(ReconstructionSweepTest, DescriptionsCoverEveryRoadAndCrashTypeAndStateWhatOddSeedsDraw) {
+  const auto open = SweepDescriptions(0), stated = SweepDescriptions(1);
+  ASSERT_EQ(open.size(), stated.size());
+  std::set<std::string> groups;
+  for (const auto& d : open) {
+    groups.insert(std::string(ToString(d.road.type.value)) + "/" + std::string(ToString(d.type.value)));
+    for (const auto& v : d.vehicles) EXPECT_FALSE(v.travel.known()) << d.source_id;
+  }
+  EXPECT_EQ(groups.size(), 13u);
+  for (const auto& d : stated) {
+    EXPECT_NO_THROW(Validate(d)) << d.source_id;
+    for (const auto& v : d.vehicles) {
+      EXPECT_TRUE(v.travel.known()) << d.source_id;
+      if (v.movement.value != Manoeuvre::kStopped) {
+        EXPECT_TRUE(v.speed.known()) << d.source_id;
+      }
+    }
+    if (d.vehicles.size() == 2) {
+      const auto course = CourseOf(d.vehicles[0], d.vehicles[1]);
+      ASSERT_TRUE(course.has_value());
+      EXPECT_TRUE(TypeFits(d.type.value, *course)) << d.source_id;
+    }
+  }
+}
+
+TEST(ReconstructionSweepTest, StatedConfigurationsReconstructAtTheirStatedSpeedsAndDeterministically) {
+  // Two seeds: one leaving directions and speeds open, one stating them.
+  const SrrReport a = SweepReconstruction(0, 2), b = SweepReconstruction(0, 2);
+  EXPECT_EQ(a.failures, b.failures);
+  EXPECT_EQ(a.succeeded, b.succeeded);
+  int ok = 0;
+  for (const auto& [group, n] : a.succeeded) ok += n;
+  EXPECT_GE(ok, a.n * 95 / 100) << (a.failures.empty() ? "" : a.failures.front());
+  // A stated speed is the speed at the planned impact, unless the plan says
+  // why not (a turn too tight for it, a striker that must close on the
+  // vehicle ahead).
+  int honoured = 0, noted = 0;
+  for (const CrashDescription& d : SweepDescriptions(1)) {
+    if (d.SingleVehicle()) continue;
+    const Reconstruction r = Reconstruct(d, 1);
+    if (!r.check.success) continue;
+    for (size_t k = 0; k < d.vehicles.size(); ++k) {
+      if (!d.vehicles[k].speed.known() || !d.vehicles[k].speed.value) continue;
+      if (std::abs(r.plan.state.bodies[k].velocity.norm() - *d.vehicles[k].speed.value) < 0.5) {
+        ++honoured;
+        continue;
+      }
+      ++noted;
+      const auto& notes = r.plan.impact.description.notes;
+      const bool said = std::any_of(notes.begin(), notes.end(), [&](const std::string& n) {
+        return n.rfind(d.vehicles[k].id + ".speed:", 0) == 0;
+      });
+      EXPECT_TRUE(said) << d.source_id << " " << d.vehicles[k].id << " changed without a note";
+    }
+  }
+  EXPECT_GT(honoured, noted);
 }
 
 }  // namespace

@@ -63,4 +63,13 @@ struct SrrReport {
 SrrReport EvaluateReconstruction(const std::string& dir, DescriptionSource from, uint64_t seed = 0);
 nlohmann::json ToJson(const SrrReport& r);
 
+// Described crash configurations for a sweep (reconstruction_sweep.cpp):
+// every road type and crash type with the movements and damaged areas a
+// report of that type gives; vehicle classes rotated by `seed`; directions
+// and speeds left open for the planner's seeded draws.
+std::vector<CrashDescription> SweepDescriptions(uint64_t seed);
+// Reconstructs SweepDescriptions(s) for seeds first_seed .. first_seed +
+// seeds - 1, with seed s; rates grouped "road/crash_type".
+SrrReport SweepReconstruction(uint64_t first_seed, int seeds);
+
 }  // namespace accsim
