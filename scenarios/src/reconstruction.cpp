@@ -158,25 +158,33 @@ SrrReport EvaluateReconstruction(const std::string& dir, DescriptionSource from,
     const std::string file = row.value("file", "line " + std::to_string(line_no));
     const RoadType road = LabelledRoadType(row);
     const std::string group(ToString(road));
-    ++rep.n;
-    ++rep.attempted[group];
-    try {
+    rep.Tally(group, file, seed, [&] {
       CrashDescription d = from == DescriptionSource::kLabels
                                ? DescriptionFromLabels(row)
                                : FromAccidentRecord(extractor.Extract(row.value("narrative", "")), road);
       d.source_id = file;
-      if (d.SingleVehicle()) ++rep.single_vehicle[group];
-      const Reconstruction r = Reconstruct(d, seed);
-      if (r.check.success) {
-        ++rep.succeeded[group];
-      } else {
-        rep.failures.push_back(file + ": " + r.check.reason + " [" + r.plan.combination + "]");
-      }
-    } catch (const std::exception& e) {
-      rep.failures.push_back(file + ": " + e.what());
-    }
+      return d;
+    });
   }
   return rep;
+}
+
+void SrrReport::Tally(const std::string& group, const std::string& id, uint64_t seed,
+                      const std::function<CrashDescription()>& describe) {
+  ++n;
+  ++attempted[group];
+  try {
+    const CrashDescription d = describe();
+    if (d.SingleVehicle()) ++single_vehicle[group];
+    const Reconstruction r = Reconstruct(d, seed);
+    if (r.check.success) {
+      ++succeeded[group];
+    } else {
+      failures.push_back(id + ": " + r.check.reason + " [" + r.plan.combination + "]");
+    }
+  } catch (const std::exception& e) {
+    failures.push_back(id + ": " + e.what());
+  }
 }
 
 nlohmann::json ToJson(const SrrReport& r) {

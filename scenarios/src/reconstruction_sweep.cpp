@@ -156,19 +156,7 @@ SrrReport SweepReconstruction(uint64_t first_seed, int seeds) {
     const uint64_t seed = first_seed + static_cast<uint64_t>(k);
     for (const CrashDescription& d : SweepDescriptions(seed)) {
       const std::string group = std::string(ToString(d.road.type.value)) + "/" + std::string(ToString(d.type.value));
-      ++rep.n;
-      ++rep.attempted[group];
-      const std::string id = d.source_id + " seed " + std::to_string(seed);
-      try {
-        const Reconstruction r = Reconstruct(d, seed);
-        if (r.check.success) {
-          ++rep.succeeded[group];
-        } else {
-          rep.failures.push_back(id + ": " + r.check.reason + " [" + r.plan.combination + "]");
-        }
-      } catch (const std::exception& e) {
-        rep.failures.push_back(id + ": " + e.what());
-      }
+      rep.Tally(group, d.source_id + " seed " + std::to_string(seed), seed, [&] { return d; });
     }
   }
   return rep;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -56,6 +57,11 @@ struct SrrReport {
   std::vector<std::string> failures;  // "case: reason"
   int n = 0;
   double Rate(const std::string& road) const;
+  // Reconstructs what `describe` returns with `seed` and counts it under
+  // `group`; a failure (or a description that cannot be made) is recorded
+  // as "id: reason".
+  void Tally(const std::string& group, const std::string& id, uint64_t seed,
+             const std::function<CrashDescription()>& describe);
 };
 // Reconstructs every case of a labelled folder (labels.jsonl, NMVCCS or
 // CIREN layout). The road type comes from the labels (the folder for
