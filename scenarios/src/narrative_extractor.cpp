@@ -1179,16 +1179,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!best && Has(scene, kOneWayHere) && !Has(scene, kTwoWayWord)) {
       r.road.one_way.Set(true, Provenance::kStated);
     }
-    static const regex kDivided(R"(\bdivided\b|\bmedian\b|\bdivided highway\b|\bbarrier wall\b|\binterstate\b|\bfreeway\b)");
+    // "divided by two solid yellow lines" is paint, not a divided road; a
+    // freeway counts when the crash is on it, not "a nearby interstate".
+    static const regex kDivided(
+        R"(\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
     static const regex kUndivided(R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b)");
     if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);
     else if (Has(scene, kDivided)) r.road.divided.Set(true, Provenance::kStated);
-    if (r.road.divided.value && r.road.lanes_total.source == Provenance::kStated &&
-        r.road.lanes_per_direction.source != Provenance::kStated && !r.road.one_way.value) {
-      // "the 2 northbound lanes of a divided highway": a count next to a
-      // direction word on a divided road is that direction's count.
-      r.road.lanes_per_direction.Set(r.road.lanes_total.value, Provenance::kInferred);
-    }
+
     // V1 leaving a driveway or parking lot was on it: NASS counts its lanes,
     // a two-way drive of one lane each way unless the report counts them.
     static const regex kMiddleLane(R"(\bmiddle (?:travel |through )?lane\b)");

@@ -560,5 +560,19 @@ TEST(NarrativeExtractorTest, AListOfVehiclesSharesADirection) {
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
 }
 
+TEST(NarrativeExtractorTest, WhatMakesARoadDivided) {
+  const auto freeway = kExtractor.Extract(
+      "V1 was traveling south in the right southbound lane of a 4-lane, divided, limited access freeway (two lanes "
+      "southbound, two lanes northbound). V1 struck the rear of V2.");
+  EXPECT_TRUE(freeway.road.divided.value);
+  EXPECT_EQ(freeway.road.lanes_per_direction.value, 2);
+  const auto paint = kExtractor.Extract(
+      "The two-lane two-way roadway was divided by two solid yellow lines. V1 was traveling east. V1 struck V2.");
+  EXPECT_FALSE(paint.road.divided.value);
+  const auto nearby = kExtractor.Extract(
+      "V1 was traveling north on a 3-lane roadway toward a nearby interstate. V1 struck V2.");
+  EXPECT_FALSE(nearby.road.divided.value);
+}
+
 }  // namespace
 }  // namespace accsim
