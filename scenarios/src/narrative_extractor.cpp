@@ -1373,6 +1373,20 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
     }
     if (!subject && !object && !refs.empty()) subject = refs.front().vehicle;
+    // "v1 and v2 collided": no object after the verb; the first named is
+    // taken as the striker, the other as struck.
+    if (!object && subject) {
+      std::vector<int> before;
+      for (const Ref& ref : refs) {
+        if (ref.pos < verb_pos && std::find(before.begin(), before.end(), ref.vehicle) == before.end()) {
+          before.push_back(ref.vehicle);
+        }
+      }
+      if (before.size() >= 2) {
+        subject = before[0];
+        object = before[1];
+      }
+    }
     if (passive && object && s.find(" by ", verb_pos) != string::npos) {
       striker = object;
       struck = subject;
@@ -1430,9 +1444,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (std::regex_search(s, am, kStruckIn)) note(struck, am[1].str());
     if (std::regex_search(s, am, kItsArea)) note(passive ? struck : striker, am[1].str());
     static const regex kHeadOnPhrase(R"(\bhead[- ]on\b)");
-    if (Has(s, kHeadOnPhrase)) {
+    static const regex kFrontToFront(R"(\bfront[- ]to[- ]front\b)");
+    static const regex kFrontToRear(R"(\bfront[- ]to[- ](?:rear|back)\b)");
+    if (Has(s, kHeadOnPhrase) || Has(s, kFrontToFront)) {
       note(striker, "front");
       note(struck, "front");
+    }
+    if (Has(s, kFrontToRear)) {
+      note(striker, "front");
+      note(struck, "rear");
     }
     static const regex kRearEndPhrase(R"(\brear[- ]end(?:ed|ing)?\b)");
     if (Has(s, kRearEndPhrase)) {

@@ -574,5 +574,14 @@ TEST(NarrativeExtractorTest, WhatMakesARoadDivided) {
   EXPECT_FALSE(nearby.road.divided.value);
 }
 
+TEST(NarrativeExtractorTest, FrontToFrontNamesBothPlanes) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling north about 30 MPH. V2 was traveling south. V1 and V2 collided front to front.");
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+}
+
 }  // namespace
 }  // namespace accsim
