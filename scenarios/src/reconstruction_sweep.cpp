@@ -32,35 +32,48 @@ Config Pair(RoadType road, CrashType type, Manoeuvre m1, Manoeuvre m2, ImpactAre
   return Config{road, type, m1, m2, a1, a2, v2_strikes, std::nullopt};
 }
 
+// What a report of each crash type can describe: the movements and damaged
+// areas of striker (V1 unless `v2_strikes`) and struck. Turning types and
+// angle crashes need crossing roads and are enumerated at junctions only;
+// the others on every road type.
 std::vector<Config> Configs() {
   using M = Manoeuvre;
   using A = ImpactArea;
   using T = CrashType;
   std::vector<Config> c;
-  const RoadType s = RoadType::kStraight;
-  // Straight roads.
-  for (M lead : {M::kStopped, M::kSlowing, M::kStraight}) c.push_back(Pair(s, T::kRearEnd, M::kStraight, lead, A::kFront, A::kRear));
-  c.push_back(Pair(s, T::kHeadOn, M::kStraight, M::kStraight, A::kFront, A::kFront));
-  c.push_back(Pair(s, T::kSideswipeSame, M::kLaneChangeLeft, M::kStraight, A::kLeft, A::kRight));
-  c.push_back(Pair(s, T::kSideswipeSame, M::kLaneChangeRight, M::kStraight, A::kRight, A::kLeft));
-  c.push_back(Pair(s, T::kSideswipeSame, M::kLaneChangeLeft, M::kStraight, A::kFrontLeft, A::kRight));
-  c.push_back(Pair(s, T::kSideswipeOpposite, M::kStraight, M::kStraight, A::kLeft, A::kLeft));
-  for (ObstaclePlace p : {ObstaclePlace::kInLane, ObstaclePlace::kRightRoadside, ObstaclePlace::kLeftRoadside}) {
-    c.push_back(Config{s, T::kSingleVehicle, M::kStraight, M::kStraight, A::kFront, A::kUnknown, false, p});
-  }
-  // Junctions.
-  for (RoadType j : {RoadType::kIntersection, RoadType::kTJunction}) {
-    c.push_back(Pair(j, T::kAngle, M::kStraight, M::kStraight, A::kFront, A::kLeft));
-    c.push_back(Pair(j, T::kAngle, M::kStraight, M::kStraight, A::kFront, A::kRight));
-    // Left turn across an oncoming vehicle: its front into the turner's
-    // right side, the turner's front into its left side, front to front.
-    c.push_back(Pair(j, T::kTurnAcrossPath, M::kTurnLeft, M::kStraight, A::kRight, A::kFront, true));
-    c.push_back(Pair(j, T::kTurnAcrossPath, M::kTurnLeft, M::kStraight, A::kFront, A::kLeft));
-    c.push_back(Pair(j, T::kTurnAcrossPath, M::kTurnLeft, M::kStraight, A::kFront, A::kFront));
-    // Turning out of the side road into the path of a through vehicle.
-    c.push_back(Pair(j, T::kTurnIntoPath, M::kTurnLeft, M::kStraight, A::kLeft, A::kFront, true));
-    c.push_back(Pair(j, T::kTurnIntoPath, M::kTurnRight, M::kStraight, A::kLeft, A::kFront, true));
-    c.push_back(Pair(j, T::kRearEnd, M::kStraight, M::kStopped, A::kFront, A::kRear));
+  for (RoadType r : {RoadType::kStraight, RoadType::kIntersection, RoadType::kTJunction}) {
+    for (M lead : {M::kStopped, M::kSlowing, M::kStraight}) c.push_back(Pair(r, T::kRearEnd, M::kStraight, lead, A::kFront, A::kRear));
+    c.push_back(Pair(r, T::kHeadOn, M::kStraight, M::kStraight, A::kFront, A::kFront));
+    c.push_back(Pair(r, T::kHeadOn, M::kPassing, M::kStraight, A::kFront, A::kFront));
+    // Sideswipes: the struck vehicle is on the side the changer moves to;
+    // opposing vehicles meet left side to left side (right-hand traffic).
+    c.push_back(Pair(r, T::kSideswipeSame, M::kLaneChangeLeft, M::kStraight, A::kLeft, A::kRight));
+    c.push_back(Pair(r, T::kSideswipeSame, M::kLaneChangeLeft, M::kStraight, A::kFrontLeft, A::kRight));
+    c.push_back(Pair(r, T::kSideswipeSame, M::kLaneChangeRight, M::kStraight, A::kRight, A::kLeft));
+    c.push_back(Pair(r, T::kSideswipeSame, M::kLaneChangeRight, M::kStraight, A::kFrontRight, A::kLeft));
+    c.push_back(Pair(r, T::kSideswipeOpposite, M::kStraight, M::kStraight, A::kLeft, A::kLeft));
+    c.push_back(Pair(r, T::kSideswipeOpposite, M::kStraight, M::kStraight, A::kFrontLeft, A::kLeft));
+    c.push_back(Pair(r, T::kSideswipeOpposite, M::kStraight, M::kStraight, A::kFrontLeft, A::kFrontLeft));
+    const std::array<std::pair<ObstaclePlace, A>, 3> kObjects = {{{ObstaclePlace::kInLane, A::kFront},
+                                                                  {ObstaclePlace::kLeftRoadside, A::kFrontLeft},
+                                                                  {ObstaclePlace::kRightRoadside, A::kFrontRight}}};
+    for (const auto& [place, area] : kObjects) {
+      c.push_back(Config{r, T::kSingleVehicle, M::kStraight, M::kStraight, area, A::kUnknown, false, place});
+    }
+    if (r == RoadType::kStraight) continue;
+    c.push_back(Pair(r, T::kAngle, M::kStraight, M::kStraight, A::kFront, A::kLeft));
+    c.push_back(Pair(r, T::kAngle, M::kStraight, M::kStraight, A::kFront, A::kRight));
+    for (T type : {T::kTurnAcrossPath, T::kTurnIntoPath}) {
+      for (M turn : {M::kTurnLeft, M::kTurnRight}) {
+        // The turner strikes the through vehicle's side, or is struck on a
+        // side, on its back (turning into the path) or head on (across it).
+        c.push_back(Pair(r, type, turn, M::kStraight, A::kFront, A::kLeft));
+        c.push_back(Pair(r, type, turn, M::kStraight, A::kFront, A::kRight));
+        c.push_back(Pair(r, type, turn, M::kStraight, A::kLeft, A::kFront, true));
+        c.push_back(Pair(r, type, turn, M::kStraight, A::kRight, A::kFront, true));
+        c.push_back(Pair(r, type, turn, M::kStraight, type == T::kTurnIntoPath ? A::kRear : A::kFront, A::kFront, true));
+      }
+    }
   }
   return c;
 }

@@ -97,7 +97,7 @@ TEST(CliTest, SweepReconstructionPrintsRatesAndRefusesZeroSeeds) {
   Result r = RunCli("sweep-reconstruction --seeds 1");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("straight/rear_end"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("(27 descriptions)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(89 descriptions)"), std::string::npos) << r.out;
   r = RunCli("sweep-reconstruction --seeds 0");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("--seeds"), std::string::npos) << r.out;
