@@ -557,10 +557,11 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
   static const regex kTurning(R"(\bturning (?:left|right) at (?:the |an )?intersection|\b(?:began|begin|started) to turn (?:left|right))");
   static const regex kTurningRight(R"(\bturning right at|\bbegan to turn right)");
   static const regex kFromOpposite(R"(\bfrom (?:the )?opposite direction|\b(?:traveling|travelling) in (?:the )?opposite direction)");
-  static const regex kAdjacent(R"(\bfrom (?:an |the )?adjacent lane)");
+  static const regex kAdjacent(
+      R"(\bfrom (?:an |the )?adjacent lane|\bsame direction\)? ?-? ?over (?:the )?(?:left|right) lane line)");
   static const regex kRearEnd(
-      R"(\bother (?:motor )?vehicle (?:in lane,? )?(?:was )?stopped|\bin lane and was stopped|\bsame direction (?:while decelerating|(?:with|at) (?:a )?(?:higher|lower|slower) speed))");
-  static const regex kCrossingPaths(R"(\bcrossing street,? across (?:\w+ )?path)");
+      R"(\bother (?:motor )?vehicle (?:in lane,? )?(?:was )?stopped|\bin lane,? (?:and was |other vehicle )?stopped|\bsame direction,? (?:while decelerating|(?:with |at )?(?:a )?(?:higher|lower|slower)(?: speed)?))");
+  static const regex kCrossingPaths(R"(\bcrossing street,? across\b)");
   if (Has(coded, kNotInvolved)) return CrashType::kSingleVehicle;
   if (Has(coded, kIntoPath)) return CrashType::kTurnIntoPath;
   const bool turning = turner || Has(coded, kTurning);
@@ -1175,8 +1176,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         r.road.lanes_total.Set(2 * directional, Provenance::kInferred);
       }
     }
-    static const regex kTwoWayWord(R"(\b2[- ]way\b)");
-    if (!best && Has(scene, kOneWayHere) && !Has(scene, kTwoWayWord)) {
+    if (!best && Has(scene, kOneWayHere) && !Has(scene, kTwoWay)) {
       r.road.one_way.Set(true, Provenance::kStated);
     }
     // "divided by two solid yellow lines" is paint, not a divided road; a
@@ -1518,7 +1518,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   CrashType type = CrashType::kUnknown;
   Provenance type_src = Provenance::kInferred;
   const string impact_text = impact < sentences.size() ? sentences[impact].text : "";
-  const string before_impact = impact > 0 && impact < sentences.size() ? sentences[impact - 1].text : "";
   if (r.participant_count.value <= 1 || !b || struck_object || parked_struck) {
     type = CrashType::kSingleVehicle;
   } else {
@@ -1527,23 +1526,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const bool same = dirs && da == db, opposite = dirs && Opposite(da, db), perpendicular = dirs && Perpendicular(da, db);
     const bool a_turn = Turning(a->movement.value), b_turn = Turning(b->movement.value);
     const VehicleRecord* turner = a_turn ? a : (b_turn ? b : nullptr);
-    const VehicleRecord* other = turner == a ? b : a;
     static const regex kLaneChangeNow(R"(\bchang\w*\s+lanes?\b|\blane change|\bmerg(?:e|ed|es|ing)\b)");
     const bool lane_change_at_impact = Has(impact_text, kLaneChangeNow) ||
                                        a->movement.value == Movement::kChangingLanes ||
                                        b->movement.value == Movement::kChangingLanes ||
                                        a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging;
     const bool struck_plain_rear = sb.rear && !sb.left && !sb.right;
-    static const regex kRearEndCoded(R"(\bother vehicle stopped|\bin lane,? (?:other vehicle )?stopped|same direction (?:with|at) (?:a )?higher speed|same direction while decelerating|same direction,? (?:with )?(?:lower|slower)|traveling in same direction while|other (?:motor )?vehicle (?:in lane )?(?:was )?stopped)");
-    const bool rear_end_coded = Has(coded, kRearEndCoded);
-    static const regex kIntoPathCoded(R"(\bturning into (?:the )?(?:same|opposite) direction)");
-    const bool into_path_coded = Has(coded, kIntoPathCoded);
-    static const regex kAcrossCoded(R"(\bfrom crossing street,? across path|\bcrossing street,? across)");
-    const bool across_coded = Has(coded, kAcrossCoded);
-    static const regex kOppositeCoded(R"(\bfrom (?:the )?opposite direction|\btraveling in (?:the )?opposite direction)");
-    const bool opposite_coded = Has(coded, kOppositeCoded);
-    static const regex kAdjacentCoded(R"(\bfrom (?:the )?adjacent lane|\bsame direction\)? ?-? ?over (?:the )?(?:left|right) lane line)");
-    const bool adjacent_coded = Has(coded, kAdjacentCoded);
     // A turner from a side road, driveway or parking lot enters the other's
     // path (turn into path); one turning off the road crosses it (turn across path).
     static const regex kFromSide(
@@ -1558,11 +1546,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
       }
     }
-    // Front corners count as fronts here: investigators code "the front left
-    // of v2 with its front left" as a head-on.
     static const regex kRearEndWord(R"(\brear[- ]end)");
     static const regex kHeadOnWord(R"(\bhead[- ]on\b)");
     static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
+    // Front corners count as fronts here: investigators code "the front left
+    // of v2 with its front left" as a head-on.
     const bool front_to_front = sa.front && (sb.front || !sb.any());
     // Paths that cross: a junction, a vehicle running a sign or light, or one
     // pulling out of a drive.
@@ -1581,21 +1569,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else if (lane_change_at_impact && !opposite && !turner_from_side) {
       type = CrashType::kSideswipeSame;
     } else if (turner) {
-      if (into_path_coded || turner_from_side) type = CrashType::kTurnIntoPath;
+      if (turner_from_side) type = CrashType::kTurnIntoPath;
       else if (perpendicular) type = CrashType::kTurnIntoPath;
       else type = CrashType::kTurnAcrossPath;
     } else if (Has(impact_text, kBroadside)) {
       type = CrashType::kAngle;  // "t-boned", "broadsided": a front into a side, paths crossing
-    } else if (rear_end_coded && !opposite && !perpendicular) {
-      type = CrashType::kRearEnd;
-    } else if (opposite || (opposite_coded && !dirs)) {
+    } else if (opposite) {
       const bool fronts = sa.front && (sb.front || !sb.any());
       type = fronts && !(sb.left || sb.right) ? CrashType::kHeadOn : CrashType::kSideswipeOpposite;
       if (sb.front) type = CrashType::kHeadOn;
-    } else if (perpendicular || (across_coded && !dirs)) {
+    } else if (perpendicular) {
       type = CrashType::kAngle;
-    } else if (same || (adjacent_coded && !dirs)) {
-      type = (sb.left || sb.right || sa.left || sa.right || adjacent_coded) ? CrashType::kSideswipeSame : CrashType::kRearEnd;
+    } else if (same) {
+      type = (sb.left || sb.right || sa.left || sa.right) ? CrashType::kSideswipeSame : CrashType::kRearEnd;
     } else if (b->movement.value == Movement::kStopped || b->movement.value == Movement::kSlowing || sb.rear) {
       type = CrashType::kRearEnd;
     } else if (sa.front && sb.front) {
@@ -1607,8 +1593,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else {
       type_src = Provenance::kDefaulted;
     }
-    (void)other;
-    (void)before_impact;
   }
   r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : type_src);
   if (a && b) {
