@@ -313,7 +313,7 @@ std::optional<Compass> DirectionIn(const string& s) {
     for (int g = 1; g <= 3; ++g) {
       if (!m[g].matched) continue;
       const bool turn = m[0].str().rfind("turn", 0) == 0;
-      if (g == 1 && Has(m[0].str() + s.substr(static_cast<size_t>(m.position() + m.length())), kBoundLane)) {
+      if (g == 1 && Has(s.substr(static_cast<size_t>(m.position()), 40), kBoundLane)) {
         if (!lane_direction) lane_direction = CompassWord(m[g].str());
       } else if (turn && lane_direction) {
         return lane_direction;
@@ -641,6 +641,9 @@ bool Turning(Movement m) { return m == Movement::kTurnLeft || m == Movement::kTu
 }  // namespace
 
 AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
+  // Words that name a configuration and its planes at once.
+  static const regex kHeadOnPhrase(R"(\bhead[- ]on\b)");
+  static const regex kRearEndPhrase(R"(\brear[- ]end(?:ed|ing|s)?\b)");
   AccidentRecord r;
   if (text.size() > kMaxBytes) {
     r.warnings.push_back("text: longer than " + std::to_string(kMaxBytes) + " bytes; only the start was read");
@@ -1443,7 +1446,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (std::regex_search(s, am, kWithIts)) note(striker, am[1].str());
     if (std::regex_search(s, am, kStruckIn)) note(struck, am[1].str());
     if (std::regex_search(s, am, kItsArea)) note(passive ? struck : striker, am[1].str());
-    static const regex kHeadOnPhrase(R"(\bhead[- ]on\b)");
     static const regex kFrontToFront(R"(\bfront[- ]to[- ]front\b)");
     static const regex kFrontToRear(R"(\bfront[- ]to[- ](?:rear|back)\b)");
     if (Has(s, kHeadOnPhrase) || Has(s, kFrontToFront)) {
@@ -1454,7 +1456,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       note(striker, "front");
       note(struck, "rear");
     }
-    static const regex kRearEndPhrase(R"(\brear[- ]end(?:ed|ing)?\b)");
     if (Has(s, kRearEndPhrase)) {
       note(striker, "front");
       note(struck, "rear");
@@ -1546,8 +1547,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
       }
     }
-    static const regex kRearEndWord(R"(\brear[- ]end)");
-    static const regex kHeadOnWord(R"(\bhead[- ]on\b)");
     static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
     // Front corners count as fronts here: investigators code "the front left
     // of v2 with its front left" as a head-on.
@@ -1560,9 +1559,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             CrashTypeFromCoding(coded, turner != nullptr, Has(impact_text, kLaneChangeNow), front_to_front)) {
       type = *from_coding;
       type_src = Provenance::kStated;
-    } else if (Has(impact_text, kRearEndWord)) {
+    } else if (Has(impact_text, kRearEndPhrase)) {
       type = CrashType::kRearEnd;
-    } else if (Has(impact_text, kHeadOnWord)) {
+    } else if (Has(impact_text, kHeadOnPhrase)) {
       type = CrashType::kHeadOn;
     } else if (struck_plain_rear && sa.front && !opposite && !lane_change_at_impact) {
       type = CrashType::kRearEnd;
