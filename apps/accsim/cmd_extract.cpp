@@ -108,6 +108,7 @@ void AddExtractCommands(CLI::App& app) {
     for (const auto& [g, n] : s.group_sizes) std::printf(" %10d", n);
     std::printf("\n");
     if (o->verbose) {
+      for (const auto& m : s.pairings) std::printf("  %s\n", m.c_str());
       for (const auto& m : s.mismatches) std::printf("  %s\n", m.c_str());
     }
   });

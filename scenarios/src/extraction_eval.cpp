@@ -133,6 +133,100 @@ std::string Fmt(double x) {
   return os.str();
 }
 
+// A labelled vehicle's number: veh_number (NMVCCS) or veh (CIREN), else its position.
+int LabelNumber(const nlohmann::json& v, size_t position) {
+  std::optional<int> n = LeadingInt(Get(v, "veh_number"));
+  if (!n) n = LeadingInt(Get(v, "veh"));
+  return n && *n > 0 ? *n : static_cast<int>(position + 1);
+}
+
+// Words of at least three letters or digits, lower case.
+std::vector<std::string> Words(const std::string& s) {
+  std::vector<std::string> out;
+  std::string w;
+  for (const char c : s + " ") {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      w += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else {
+      if (w.size() >= 3) out.push_back(w);
+      w.clear();
+    }
+  }
+  return out;
+}
+
+// How well a record vehicle's description ("1994 pontiac grand am") matches
+// a coded vehicle: one point each for the model year, the make and the model.
+int IdentityMatch(const std::string& description, const nlohmann::json& label) {
+  const std::vector<std::string> have = Words(description);
+  auto has = [&](const std::string& w) { return std::find(have.begin(), have.end(), w) != have.end(); };
+  auto any_of = [&](const std::string& field) {
+    for (const auto& w : Words(field)) {
+      if (has(w)) return true;
+    }
+    return false;
+  };
+  std::string year = Get(label, "model_year");
+  if (year.empty()) year = Get(label, "year");
+  return (year.size() == 4 && has(year)) + any_of(Get(label, "make")) + any_of(Get(label, "model"));
+}
+
+// Pairs coded vehicle numbers with the record's vehicles. Narratives and
+// coded data sometimes number the same two vehicles the other way round;
+// when the year/make/model each description gives pairs them strictly
+// better than the numbers do, that pairing is used, else the numbering.
+// Returns coded number -> record index (-1: the record has no such vehicle).
+std::map<int, int> PairVehicles(const nlohmann::json& row, const AccidentRecord& r) {
+  std::map<int, nlohmann::json> identity;  // coded number -> the label object carrying year/make/model
+  if (row.contains("vehicle_summaries") && row["vehicle_summaries"].is_array()) {
+    for (size_t i = 0; i < row["vehicle_summaries"].size(); ++i) {
+      identity[LabelNumber(row["vehicle_summaries"][i], i)] = row["vehicle_summaries"][i];
+    }
+  }
+  for (size_t i = 0; i < row["vehicles"].size(); ++i) {
+    const nlohmann::json& v = row["vehicles"][i];
+    if (!Get(v, "make").empty()) identity[LabelNumber(v, i)] = v;
+  }
+  std::map<int, int> by_number;
+  for (const auto& v : {row["vehicles"], row.value("vehicle_summaries", nlohmann::json::array())}) {
+    for (size_t i = 0; i < v.size(); ++i) {
+      const int n = LabelNumber(v[i], i);
+      by_number[n] = n <= static_cast<int>(r.vehicles.size()) ? n - 1 : -1;
+    }
+  }
+  const size_t k = r.vehicles.size();
+  if (identity.size() < 2 || k < 2 || k > 6) return by_number;
+  std::vector<int> numbers;
+  for (const auto& [n, v] : identity) numbers.push_back(n);
+  std::vector<int> order(k);
+  for (size_t i = 0; i < k; ++i) order[i] = static_cast<int>(i);
+  auto total = [&](const std::vector<int>& perm) {
+    int t = 0;
+    for (size_t i = 0; i < numbers.size() && i < perm.size(); ++i) {
+      t += IdentityMatch(r.vehicles[perm[i]].description.value, identity[numbers[i]]);
+    }
+    return t;
+  };
+  std::vector<int> numbered(numbers.size(), -1);  // the numbering, as a permutation to compare against
+  for (size_t i = 0; i < numbers.size(); ++i) numbered[i] = by_number.count(numbers[i]) ? by_number[numbers[i]] : -1;
+  int base = 0;
+  for (size_t i = 0; i < numbers.size(); ++i) {
+    if (numbered[i] >= 0) base += IdentityMatch(r.vehicles[numbered[i]].description.value, identity[numbers[i]]);
+  }
+  int best = base;
+  std::vector<int> best_perm;
+  do {
+    const int t = total(order);
+    if (t > best) {
+      best = t;
+      best_perm = order;
+    }
+  } while (std::next_permutation(order.begin(), order.end()));
+  if (best_perm.empty()) return by_number;
+  for (size_t i = 0; i < numbers.size(); ++i) by_number[numbers[i]] = i < best_perm.size() ? best_perm[i] : -1;
+  return by_number;
+}
+
 }  // namespace
 
 ExtractionScore EvaluateExtraction(const std::string& dir, const NarrativeExtractor& extractor) {
@@ -174,7 +268,26 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
     const std::string group =
         slash != std::string::npos && file.find('/', slash + 1) == std::string::npos ? file.substr(0, slash) : "all";
     const AccidentRecord r = extract(row["narrative"].get<std::string>());
-    const nlohmann::json& vehicles = row["vehicles"];
+    // Coded vehicles paired with the narrative's; "V1's" road labels are
+    // those of the coded vehicle paired with the narrative's V1.
+    const std::map<int, int> pairing = PairVehicles(row, r);
+    auto record_index = [&](int number) {
+      const auto it = pairing.find(number);
+      return it == pairing.end() ? number - 1 : it->second;
+    };
+    nlohmann::json vehicles = nlohmann::json::array();
+    for (size_t i = 0; i < row["vehicles"].size(); ++i) {
+      if (record_index(LabelNumber(row["vehicles"][i], i)) == 0) vehicles.push_back(row["vehicles"][i]);
+    }
+    for (size_t i = 0; i < row["vehicles"].size(); ++i) {
+      if (record_index(LabelNumber(row["vehicles"][i], i)) != 0) vehicles.push_back(row["vehicles"][i]);
+    }
+    for (const auto& [number, index] : pairing) {
+      if (index >= 0 && index != number - 1) {
+        score.pairings.push_back(id + ": coded V" + std::to_string(number) + " is the narrative's V" +
+                                 std::to_string(index + 1) + " (year, make, model)");
+      }
+    }
     std::map<std::string, double> got;
     auto miss = [&](const std::string& attr, const std::string& want, const std::string& have) {
       score.mismatches.push_back(id + ": " + attr + ": want " + want + ", got " + have);
@@ -234,10 +347,13 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
         const auto want = MovementLabel(Get(vehicles[i], "pre_event_movement"));
         if (!want) continue;
         ++n;
-        const Movement have = i < r.vehicles.size() ? r.vehicles[i].pre_event.value : Movement::kUnknown;
+        const int number = LabelNumber(vehicles[i], i);
+        const int k = record_index(number);
+        const Movement have =
+            k >= 0 && k < static_cast<int>(r.vehicles.size()) ? r.vehicles[k].pre_event.value : Movement::kUnknown;
         ok += *want == have;
         if (*want != have) {
-          miss("driving_actions V" + std::to_string(i + 1), std::string(ToString(*want)), std::string(ToString(have)));
+          miss("driving_actions V" + std::to_string(number), std::string(ToString(*want)), std::string(ToString(have)));
         }
       }
       if (n > 0) got["driving_actions"] = ok / n;
@@ -275,7 +391,8 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
         const std::string second = hit.substr(8);
         for (const auto& [veh, want] : {std::pair{first, a1}, std::pair{second, a2}}) {
           if (!want) continue;
-          const DamageArea have = r.AreaOf("V" + veh);
+          const std::optional<int> number = LeadingInt(veh);
+          const DamageArea have = number ? r.AreaOf("V" + std::to_string(record_index(*number) + 1)) : DamageArea::kUnknown;
           ++area_scored;
           area_hits += have == *want;
           if (have != *want) {
@@ -314,7 +431,8 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
 nlohmann::json ToJson(const ExtractionScore& s) {
   nlohmann::json groups = nlohmann::json::object();
   for (const auto& [g, attrs] : s.by_group) groups[g] = {{"attributes", attrs}, {"n", s.group_sizes.at(g)}};
-  return {{"attributes", s.attributes}, {"n", s.n}, {"scored", s.scored}, {"extra", s.extra}, {"groups", groups}};
+  return {{"attributes", s.attributes}, {"n", s.n},         {"scored", s.scored},
+          {"extra", s.extra},           {"groups", groups}, {"pairings", s.pairings}};
 }
 
 }  // namespace accsim

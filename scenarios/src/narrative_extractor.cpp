@@ -579,19 +579,29 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
 // rural roads and highways 55, city streets (urban, downtown, one-way
 // streets) 30, residential streets 25, private roads and parking lots the
 // crash happened on 15. Unnamed classes get none.
-std::optional<double> TypicalLimitMph(const string& scene) {
-  static const std::array<std::pair<regex, double>, 7> kClasses = {{
-      {regex(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b|\bi-\d{1,3}\b)"), 70.0},
-      {regex(R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)"), 15.0},
-      {regex(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)"), 25.0},
-      {regex(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)"), 55.0},
-      {regex(R"(\b(?:urban|city|downtown|business district|commercial)\b)"), 30.0},
-      {regex(R"(\boneway (?:\w+ )?(?:road|roadway|street)\b)"), 30.0},
-      {regex(R"(\bhighway\b)"), 55.0},
-  }};
-  for (const auto& [re, mph] : kClasses) {
-    if (Has(scene, re)) return mph;
-  }
+// The limit a road class usually has in the U.S., for reports that name the
+// class but not the limit: freeways 70 mph, parking lots and private roads
+// 15, residential streets 25, rural roads and state or county highways 55,
+// urban streets 30 (45 on multi-lane urban arterials: `lanes_total` >= 3),
+// one-way streets 30. A road the report describes (`road_described`: its
+// lanes were counted) without naming any class gets 55, the statutory limit
+// outside towns in most states; with nothing described there is no prior.
+std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool road_described) {
+  static const regex kFreeway(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b|\bi-\d{1,3}\b)");
+  static const regex kPrivate(
+      R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)");
+  static const regex kResidential(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)");
+  static const regex kRural(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)");
+  static const regex kUrban(R"(\b(?:urban|city|downtown|business district|commercial)\b)");
+  static const regex kOneWayStreet(R"(\boneway (?:\w+ )?(?:road|roadway|street)\b)");
+  static const regex kHighway(R"(\bhighway\b)");
+  if (Has(scene, kFreeway)) return 70.0;
+  if (Has(scene, kPrivate)) return 15.0;
+  if (Has(scene, kResidential)) return 25.0;
+  if (Has(scene, kRural)) return 55.0;
+  if (Has(scene, kUrban)) return lanes_total >= 3 ? 45.0 : 30.0;
+  if (Has(scene, kOneWayStreet)) return 30.0;
+  if (Has(scene, kHighway) || road_described) return 55.0;
   return std::nullopt;
 }
 
@@ -1336,7 +1346,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
   }
   if (!r.road.speed_limit_mps.known()) {
-    if (const auto mph = TypicalLimitMph(scene)) {
+    if (const auto mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known())) {
       r.road.speed_limit_mps.Set(*mph * kMphToMps, Provenance::kInferred);
       r.road.speed_limit_unit.Set("mph", Provenance::kInferred);
     }

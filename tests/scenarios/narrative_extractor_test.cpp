@@ -299,6 +299,24 @@ TEST(NarrativeExtractorTest, RoadClassGivesAnInferredLimitOnlyWhenNoneIsPosted) 
   EXPECT_FALSE(unnamed.road.speed_limit_mps.known());
 }
 
+TEST(NarrativeExtractorTest, UnpostedLimitFollowsTheRoadClassAndSize) {
+  auto limit_mph = [](const char* text) {
+    const auto r = kExtractor.Extract(text);
+    EXPECT_EQ(r.road.speed_limit_mps.source, Provenance::kInferred) << text;
+    return r.road.speed_limit_mps.value / 0.44704;
+  };
+  // A described road with no class named: the usual limit outside towns.
+  EXPECT_NEAR(limit_mph("V1 was traveling east in the eastbound lane of a two-lane, two-way roadway. V2 was traveling "
+                        "west. The front of V2 struck the front of V1."),
+              55.0, 1e-9);
+  // Urban: a multi-lane arterial is faster than a two-lane street.
+  EXPECT_NEAR(limit_mph("V1 was traveling north in the left lane of a four-lane, two-way urban roadway. V1 struck V2."),
+              45.0, 1e-9);
+  EXPECT_NEAR(limit_mph("V1 was traveling north on a two-lane urban street. V1 struck V2."), 30.0, 1e-9);
+  EXPECT_NEAR(limit_mph("V1 was traveling south in the right lane of a limited access freeway. V2 struck V1."), 70.0,
+              1e-9);
+}
+
 TEST(NarrativeExtractorTest, PreEventMovementRoundTripsThroughJson) {
   const auto r = kExtractor.Extract(
       "V1 stopped at the stop sign and then turned left. V2 was traveling east. V2 struck V1.");

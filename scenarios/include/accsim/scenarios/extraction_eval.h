@@ -31,6 +31,7 @@ struct ExtractionScore {
   std::map<std::string, std::map<std::string, double>> by_group;   // folder -> attribute -> accuracy
   std::map<std::string, int> group_sizes;
   std::vector<std::string> mismatches;                             // "case: attribute: want X, got Y"
+  std::vector<std::string> pairings;  // "case: coded V1 is the narrative's V2 (year, make, model)"
 };
 
 using ExtractFn = std::function<AccidentRecord(std::string_view)>;
