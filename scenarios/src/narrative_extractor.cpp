@@ -427,7 +427,11 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kSlow(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
-  const bool parked = Has(t, kParked);
+  // "... impacted the left side of a legally parked and unoccupied van": the
+  // parked thing is what the vehicle struck, not the vehicle itself.
+  static const regex kParkedObject(
+      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)\b[^,.;]*)");
+  const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);
   if (parked && !Has(t, kLeavingParking)) e.parked = true;
   if (Has(t, kLeavingParking)) e.leaving_parking = true;
   if (Has(t, kRolledStop)) e.rolled_stop = true;
@@ -947,8 +951,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const Kind kind = sentences[seg.sentence].kind;
     // Told after the impact but in the past perfect ("v2 had stopped at the
     // sign before initiating its turn"): still what happened before it.
-    static const regex kPastPerfect(R"(^\s*v[1-9]\b[^.]{0,80}?\bhad\s+(?:\w+\s+)?(?:been|stopped|slowed|turned|begun|started|come|pulled|entered)\b)");
+    static const regex kPastPerfect(
+        R"(^\s*(?:v[1-9]|he|she|they|it|the driver(?: of v[1-9])?)\b[^.]{0,80}?\bhad\s+(?:\w+\s+)?(?:been|stopped|slowed|turned|begun|started|come|pulled|entered)\b)");
     const bool pre_impact = seg.sentence <= impact || impact == sentences.size() || Has(seg.text, kPastPerfect);
+    // Told after the impact about the time before the manoeuvre ("he did not
+    // stop before making the turn"): read as the driver's account.
+    static const regex kBeforeTheCrash(
+        R"(\b(?:before|prior to)\s+(?:making|starting|beginning|initiating|entering|turning|pulling|the (?:turn|crash|collision|impact)|impact)\b)");
+    const bool told_of_before = !pre_impact && Has(seg.text, kBeforeTheCrash);
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
       if (!v.travel.known() && (kind == Kind::kNarrative || pre_impact)) {
@@ -975,7 +985,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kParkedOnly(R"(\bparked\b)");
     if (kind == Kind::kNarrative && pre_impact && !seg.perceived) {
       ReadMovement(seg.text, narrative[vi]);
-    } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, kParkedOnly))) {
+    } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, kParkedOnly)) ||
+               (kind == Kind::kNarrative && told_of_before)) {
       ReadMovement(seg.text, statement[vi]);
     } else if (kind == Kind::kCoding) {
       MovementEvidence* other = nullptr;

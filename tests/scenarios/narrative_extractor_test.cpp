@@ -317,6 +317,32 @@ TEST(NarrativeExtractorTest, UnpostedLimitFollowsTheRoadClassAndSize) {
               1e-9);
 }
 
+TEST(NarrativeExtractorTest, WhatTheTextTellsLaterOfTheTimeBeforeTheTurnCounts) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling north and made a left turn at the intersection. V2 was traveling south. The front of V2 struck "
+      "the right side of V1. V1 was driven by a 40-year old male who was not injured. He did not stop before making "
+      "the turn.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kSlowing);
+  const auto stopped = kExtractor.Extract(
+      "V1 was traveling north and turned left at the intersection. V2 was traveling south. The front of V2 struck the "
+      "right side of V1. The driver of V1 had stopped at the stop sign for several seconds.");
+  EXPECT_EQ(stopped.vehicles[0].pre_event.value, Movement::kStopped);
+}
+
+TEST(NarrativeExtractorTest, AParkedVehicleStruckIsNotTheStriker) {
+  const auto r = kExtractor.Extract(
+      "Vehicle 1 was traveling west. The driver veered to the left and the front of Vehicle 1 impacted the left side "
+      "of a legally parked and unoccupied Ford van.");
+  ASSERT_GE(r.vehicles.size(), 1u);
+  EXPECT_FALSE(r.vehicles[0].parked.value);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+  const auto intro = kExtractor.Extract("V2, a parked and unoccupied 1998 Ford van, was struck by V1.");
+  ASSERT_GE(intro.vehicles.size(), 2u);
+  EXPECT_TRUE(intro.vehicles[1].parked.value);
+}
+
 TEST(NarrativeExtractorTest, PreEventMovementRoundTripsThroughJson) {
   const auto r = kExtractor.Extract(
       "V1 stopped at the stop sign and then turned left. V2 was traveling east. V2 struck V1.");
