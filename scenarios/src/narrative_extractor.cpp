@@ -364,6 +364,7 @@ struct RoadStatement {
   std::optional<int> axis;         // 0 = east-west, 1 = north-south, when the phrase names one
   int total = 0, per_direction = 0, directional = 0;
   bool one_way = false;
+  bool cross = false;              // said of the cross street ("the cross street is a 2-lane road")
 };
 
 std::optional<int> AxisIn(const string& s) {
@@ -1097,6 +1098,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const size_t stop = std::min(comma, near_after.find(" and "));
         if (stop != string::npos) near_after = near_after.substr(0, stop);
         rs.one_way = Has(near_before, kOneWayHere) || Has(near_after, kOneWayHere);
+        static const regex kCrossStreet(
+            R"(\b(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b)");
+        rs.cross = Has(around, kCrossStreet);
         rs.total = total;
         rs.per_direction = per_dir;
         rs.directional = directional;
@@ -1162,6 +1166,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
     if (!best && v1_way <= 0 && !roads.empty()) best = &roads.front();
+    // V1 travelling across the axis of the road described as the through
+    // road came from the cross street, when the report describes one.
+    if (best && !best->cross && v1_axis >= 0) {
+      const RoadStatement* through = pick([](const RoadStatement& rs) { return !rs.cross && rs.axis.has_value(); });
+      const RoadStatement* cross = pick([&](const RoadStatement& rs) {
+        return rs.cross && rs.owner <= 1 && (!rs.axis || *rs.axis == v1_axis);
+      });
+      if (through && cross && *through->axis != v1_axis && (!best->axis || *best->axis != v1_axis)) best = cross;
+    }
     if (best) {
       // Combine statements about the same road (a total in one sentence, the
       // split per direction in the next).
@@ -1191,6 +1204,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       } else if (per) {
         r.road.lanes_per_direction.Set(per, Provenance::kStated);
         r.road.lanes_total.Set(total ? total : 2 * per, total ? Provenance::kStated : Provenance::kInferred);
+      } else if (total == 1 && Has(sentences[best->sentence].text, kTwoWay)) {
+        // "a two way, one lane roadway": one lane each way.
+        r.road.lanes_per_direction.Set(1, Provenance::kStated);
+        r.road.lanes_total.Set(2, Provenance::kInferred);
       } else if (total) {
         r.road.lanes_total.Set(total, Provenance::kStated);
         r.road.lanes_per_direction.Set(directional ? directional : std::max(1, total / 2),

@@ -343,6 +343,21 @@ TEST(NarrativeExtractorTest, AParkedVehicleStruckIsNotTheStriker) {
   EXPECT_TRUE(intro.vehicles[1].parked.value);
 }
 
+TEST(NarrativeExtractorTest, AVehicleCrossingTheThroughRoadsAxisIsOnTheCrossStreet) {
+  const auto r = kExtractor.Extract(
+      "The crash occurred at a T-intersection on a two way six lane roadway. The roadway consists of three westbound "
+      "and three eastbound lanes. The cross street is a two way, one lane asphalt roadway. V1 was traveling "
+      "southbound approaching the through street, stopped for the stop sign and turned left. V2 was traveling east. "
+      "The front of V2 struck the left side of V1.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);  // one lane each way on the cross street
+  EXPECT_EQ(r.road.lanes_per_direction.value, 1);
+  const auto through = kExtractor.Extract(
+      "The crash occurred at a T-intersection on a two way six lane roadway. The roadway consists of three westbound "
+      "and three eastbound lanes. The cross street is a two way, one lane asphalt roadway. V1 was traveling east. V2 "
+      "was traveling south and turned left. The front of V1 struck the left side of V2.");
+  EXPECT_EQ(through.road.lanes_total.value, 6);
+}
+
 TEST(NarrativeExtractorTest, PreEventMovementRoundTripsThroughJson) {
   const auto r = kExtractor.Extract(
       "V1 stopped at the stop sign and then turned left. V2 was traveling east. V2 struck V1.");
