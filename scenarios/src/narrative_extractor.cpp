@@ -76,6 +76,19 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kKmh, "kmh");
   s = std::regex_replace(s, kOneWay, "oneway");
   s = std::regex_replace(s, kNonContact, "noncontact");
+  // Police abbreviations, whole words only: "nb on elm st", "a 4 ln rdwy".
+  static const std::array<std::pair<regex, const char*>, 9> kAbbreviations = {{
+      {regex(R"(\bnb\b)"), "northbound"},
+      {regex(R"(\bsb\b)"), "southbound"},
+      {regex(R"(\beb\b)"), "eastbound"},
+      {regex(R"(\bwb\b)"), "westbound"},
+      {regex(R"(\blns\b)"), "lanes"},
+      {regex(R"(\bln\b)"), "lane"},
+      {regex(R"(\brdwy\b)"), "roadway"},
+      {regex(R"(\b(?:intx|intersec)\b)"), "intersection"},
+      {regex(R"(\bhwy\b)"), "highway"},
+  }};
+  for (const auto& [re, to] : kAbbreviations) s = std::regex_replace(s, re, to);
   // Number words: "forty-five" -> 45, "two" -> 2.
   static const regex kCompound(
       R"(\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b)");
@@ -95,6 +108,10 @@ string Normalise(std::string_view in) {
   static const regex kVehicle(
       R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))");
   s = std::regex_replace(s, kVehicle, "v$1");
+  // Police shorthand: "u2" (unit 2) and "d1" (driver 1), only as whole words.
+  static const regex kShortRef(
+      R"(\b[ud]([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))");
+  s = std::regex_replace(s, kShortRef, "v$1");
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
   static const regex kOrdinalVehicle(R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b)");
   s = std::regex_replace(s, kOrdinalVehicle, "v$1");

@@ -642,5 +642,27 @@ TEST(NarrativeExtractorTest, FrontToFrontNamesBothPlanes) {
   EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
 }
 
+TEST(NarrativeExtractorTest, UnitAndDriverShorthandNameTheVehicles) {
+  const auto r = kExtractor.Extract(
+      "U1 WAS WESTBOUND ON PINE RD. U2 WAS STOPPED AHEAD OF U1 FOR A TRAIN. D1 SAID HE LOOKED AWAY. FRONT OF U1 "
+      "STRUCK REAR OF U2.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
+
+TEST(NarrativeExtractorTest, PoliceAbbreviationsForDirectionLanesAndIntersection) {
+  const auto r = kExtractor.Extract(
+      "V1 WAS NB ON A 4 LN UNDIVIDED RDWY, POSTED 40 MPH. V2 WAS EB ON BIRCH ST. FRONT OF V2 STRUCK LEFT SIDE OF "
+      "V1 IN THE INTX.");
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
+  EXPECT_EQ(r.road.lanes_total.value, 4);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+}
+
 }  // namespace
 }  // namespace accsim
