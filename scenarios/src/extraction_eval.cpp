@@ -126,6 +126,11 @@ std::optional<double> LimitKmh(const std::string& s) {
   return std::nullopt;
 }
 
+// "No Statutory Limit": the road has none (a code, unlike a blank or "Unknown").
+std::optional<bool> NoStatutoryLimit(const std::string& s) {
+  return Lower(s).find("no statutory") != std::string::npos ? std::optional<bool>(true) : std::nullopt;
+}
+
 std::string Fmt(double x) {
   std::ostringstream os;
   os.precision(3);
@@ -305,16 +310,19 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
     }
 
     // Speed limit: V1's posted limit (the next vehicle's when V1 has none
-    // coded), within 3 km/h; no limit coded anywhere is right when none is stated.
+    // coded), within 3 km/h. "No statutory limit" coded for every vehicle is
+    // right when the record has no limit; a blank or unknown code is not scored.
     std::optional<double> want_kmh = FirstVehicle<double>(vehicles, "speed_limit_kmph", LimitKmh);
     if (!want_kmh) want_kmh = FirstVehicle<double>(vehicles, "posted_speed_limit_kmph", LimitKmh);
+    const bool no_limit_coded = FirstVehicle<bool>(vehicles, "speed_limit_kmph", NoStatutoryLimit).has_value() ||
+                                FirstVehicle<bool>(vehicles, "posted_speed_limit_kmph", NoStatutoryLimit).has_value();
     const double got_kmh = r.road.speed_limit_mps.value * 3.6;
     if (want_kmh) {
       got["speed_limit"] = r.road.speed_limit_mps.known() && std::abs(got_kmh - *want_kmh) <= 3.0;
-    } else {
+    } else if (no_limit_coded) {
       got["speed_limit"] = !r.road.speed_limit_mps.known();
     }
-    if (!got["speed_limit"]) {
+    if (got.count("speed_limit") && !got["speed_limit"]) {
       miss("speed_limit", want_kmh ? Fmt(*want_kmh) : "none", r.road.speed_limit_mps.known() ? Fmt(got_kmh) : "none");
     }
 

@@ -35,6 +35,21 @@ TEST(ExtractionEvalTest, ReadsTheCirenLayoutToo) {
   EXPECT_GE(s.attributes.at("speed_limit"), 0.70);  // never stated there: the road-class prior
 }
 
+// Reports in six other styles (police ALL CAPS, "Unit 1", first-person
+// claims, news, British/metric wording, terse CIREN-like), written and
+// labelled apart from the rules; docs/extraction.md gives the figures.
+TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
+  const ExtractionScore s =
+      EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/report_styles", NarrativeExtractor{});
+  EXPECT_EQ(s.n, 36);
+  EXPECT_GE(s.attributes.at("participant_count"), 0.75);
+  EXPECT_GE(s.attributes.at("speed_limit"), 0.90);
+  EXPECT_GE(s.attributes.at("lane_count"), 0.75);
+  EXPECT_GE(s.attributes.at("collision_location"), 0.83);
+  EXPECT_GE(s.attributes.at("driving_actions"), 0.75);
+  EXPECT_GE(s.attributes.at("crash_type"), 0.68);
+}
+
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {
   const std::string dir = ::testing::TempDir() + "/eval_mapping";
   std::filesystem::create_directories(dir);
@@ -103,6 +118,19 @@ TEST(ExtractionEvalTest, VehiclesNumberedTheOtherWayArePairedByYearMakeAndModel)
   nlohmann::json anonymous = row;
   for (auto& v : anonymous["vehicles"]) v.erase("make"), v.erase("model"), v.erase("model_year");
   EXPECT_EQ(ScoreOne("eval_anonymous", anonymous).attributes.at("driving_actions"), 0.0);
+}
+
+TEST(ExtractionEvalTest, ABlankLimitIsNotScoredButNoStatutoryLimitIs) {
+  auto row = [](const char* limit) {
+    return nlohmann::json{{"vehcount", "2"},
+                          {"narrative", "V1 was traveling east. V2 was traveling west. V1 struck V2."},
+                          {"vehicles", {{{"veh_number", "1"}, {"speed_limit_kmph", limit}}}}};
+  };
+  EXPECT_EQ(ScoreOne("eval_blank_limit", row("")).scored.at("speed_limit"), 0);
+  EXPECT_EQ(ScoreOne("eval_unknown_limit", row("Unknown")).scored.at("speed_limit"), 0);
+  const ExtractionScore none = ScoreOne("eval_no_limit", row("No Statutory Limit"));
+  EXPECT_EQ(none.scored.at("speed_limit"), 1);
+  EXPECT_EQ(none.attributes.at("speed_limit"), 1.0);  // the text states none and names no road class
 }
 
 TEST(ExtractionEvalTest, BadFoldersAreNamed) {
