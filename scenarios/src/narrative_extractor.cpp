@@ -139,12 +139,27 @@ Numbered NameUnnumberedVehicles(const string& s) {
   if (Has(s, kAnyRef)) return {s, {}};
   static const string kNoun =
       R"((car|sedan|coupe|hatchback|wagon|suv|jeep|pickup(?: truck)?|truck|van|minivan|motorcycle|motorbike|bus|tractor-trailer|semi|taxi|cab|vehicle))";
+  static const string kMakes =
+      R"((ford|toyota|honda|chevrolet|chevy|nissan|hyundai|kia|subaru|mazda|dodge|volkswagen|vw|bmw|mercedes|audi|lexus|acura|infiniti|buick|cadillac|gmc|chrysler|pontiac|saturn|mitsubishi|volvo|tesla|lincoln|mercury|plymouth|oldsmobile|suzuki|isuzu|saab|mini|fiat|peugeot|renault|vauxhall|skoda|seat|citroen))";
+  static const string kColour =
+      R"((?:(?:(?:dark|light|bright)\s+)?(?:white|black|silver|gray|grey|red|blue|green|gold|maroon|tan|beige|brown|yellow|orange|purple|burgundy)\s+))";
   // Group 1: the phrase without its article (noun included); group 2: the noun.
   static const regex kMine(R"(\bmy\s+((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
-  // "a red suv", "another car", and a model year: "a 2010 honda accord".
-  static const regex kIntro(R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
-                            R"()\b|\b(?:a|an)\s+((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+(?!was\b|that\b|which\b|who\b|and\b|lost\b|left\b)[a-z][a-z0-9-]*){0,2}))");
-  static const regex kFirstPerson(R"(\b(?:i|me)\b)");
+  // "a red suv", "another car", a model year: "a 2010 honda accord", a make
+  // with its model: "a white ford explorer", "a toyota corolla" (groups 5, 6),
+  // a rider or driver named for the vehicle: "a motorcyclist" (group 7), and,
+  // once the narrator is v1, "the car behind me" (groups 8, 9).
+  static const regex kIntro(
+      R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
+      R"()\b|\b(?:a|an)\s+((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+(?!was\b|that\b|which\b|who\b|and\b|lost\b|left\b)[a-z][a-z0-9-]*){0,2}))" +
+      R"(|\b(?:a|an)\s+()" + kColour + R"(?)" + kMakes +
+      R"((?:\s+(?!was\b|were\b|that\b|which\b|who\b|and\b|in\b|on\b|at\b|with\b|driven\b|travel\w*|going\b|heading\b|had\b|hit\b|struck\b)[a-z0-9][a-z0-9-]*)?)\b)" +
+      R"(|\b(?:a|an)\s+(motorcyclist|motorist)\b|\bthe\s+(?:other\s+)?()" + kNoun +
+      R"()(?=\s+(?:behind|ahead of|in front of) v1\b))");
+  // "the sedan, a kia optima," and "it was a nissan altima" describe a
+  // vehicle already named.
+  static const regex kAppositive(R"((?:\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*|\bit (?:was|is)\s+)$)");
+  static const regex kFirstPerson(R"(\b(?:i|me)\b(?!-))");
   Numbered out{s, {}};
   std::map<string, int> owner;  // head noun -> vehicle, 0 when two share it
   int next = 1;
@@ -155,20 +170,45 @@ Numbered NameUnnumberedVehicles(const string& s) {
     out.descriptions[1] = m[1].str();
     out.text = std::regex_replace(std::regex_replace(out.text, kMine, "v1"), kFirstPerson, "v1");
     next = 2;
+  } else if (Has(out.text, kFirstPerson)) {
+    // A narrator known only as "i" / "me" drives v1.
+    out.text = std::regex_replace(out.text, kFirstPerson, "v1");
+    next = 2;
   }
   string rebuilt;
+  int motorist = 0;
   auto from = out.text.cbegin();
   for (auto it = std::sregex_iterator(out.text.cbegin(), out.text.cend(), kIntro);
        it != std::sregex_iterator() && next <= 9; ++it) {
     const smatch& im = *it;
-    const bool by_year = im[3].matched;
-    const string phrase = by_year ? im[3].str() : im[1].str();
-    const string head = by_year ? im[4].str() : head_of(im[2].str());
-    if (head == "vehicle" && im.str().rfind("another", 0) != 0) continue;  // "a vehicle" is too vague to count
+    std::vector<string> heads;
+    string phrase;
+    if (im[3].matched) {
+      phrase = im[3].str();
+      heads = {im[4].str()};
+    } else if (im[5].matched) {
+      phrase = im[5].str();
+      heads = {im[6].str()};
+    } else if (im[7].matched) {
+      const bool rider = im[7].str() == "motorcyclist";
+      phrase = rider ? "motorcycle" : "car";
+      heads = {im[7].str(), phrase};
+    } else if (im[8].matched) {
+      phrase = im[8].str();
+      heads = {};  // "the car behind me" is not what a later "the car" means
+    } else {
+      phrase = im[1].str();
+      heads = {head_of(im[2].str())};
+    }
+    if (!heads.empty() && heads[0] == "vehicle" && im.str().rfind("another", 0) != 0) continue;  // "a vehicle" is too vague to count
+    const size_t at = static_cast<size_t>(im[0].first - out.text.cbegin());
+    const size_t back = std::min<size_t>(at, 60);
+    if (!im[8].matched && std::regex_search(out.text.substr(at - back, back), kAppositive)) continue;
     rebuilt.append(from, im[0].first);
     rebuilt += "v" + std::to_string(next);
     out.descriptions[next] = phrase;
-    owner[head] = owner.count(head) ? 0 : next;
+    for (const string& head : heads) owner[head] = owner.count(head) ? 0 : next;
+    if (im[7].matched && im[7].str() == "motorist") motorist = next;
     ++next;
     from = im[0].second;
   }
@@ -177,6 +217,11 @@ Numbered NameUnnumberedVehicles(const string& s) {
     if (v == 0) continue;
     const regex the(R"(\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + head + R"(\b)");
     rebuilt = std::regex_replace(rebuilt, the, "v" + std::to_string(v));
+  }
+  if (motorist > 0) {
+    // "a motorist ... when her car was struck": the motorist's own car.
+    static const regex kTheirCar(R"(\b(?:his|her|their)\s+(?:car|vehicle)\b)");
+    rebuilt = std::regex_replace(rebuilt, kTheirCar, "v" + std::to_string(motorist));
   }
   out.text = std::move(rebuilt);
   return out;

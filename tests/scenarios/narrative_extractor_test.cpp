@@ -664,5 +664,30 @@ TEST(NarrativeExtractorTest, PoliceAbbreviationsForDirectionLanesAndIntersection
   EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
 }
 
+TEST(NarrativeExtractorTest, ShortDescriptionsNameNarratorMakesRidersAndAppositives) {
+  const auto narrator = kExtractor.Extract(
+      "I was waiting at a red light on Cole Street when a green van struck me from behind.");
+  ASSERT_EQ(narrator.participant_count.value, 2);
+  EXPECT_EQ(narrator.vehicles[1].vehicle_class.value, VehicleClass::kVan);
+  EXPECT_EQ(narrator.crash.striking.value, "V2");
+  const auto make = kExtractor.Extract(
+      "A red Honda Fit was stopped at the light when a Dodge Ram hit it from behind.");
+  ASSERT_EQ(make.participant_count.value, 2);
+  EXPECT_EQ(make.vehicles[1].vehicle_class.value, VehicleClass::kPickup);
+  const auto rider = kExtractor.Extract(
+      "A motorcyclist was thrown on Dover Lane when a taxi turned left across his path. The motorcycle struck the "
+      "right side of the taxi.");
+  ASSERT_EQ(rider.participant_count.value, 2);
+  EXPECT_EQ(rider.vehicles[0].vehicle_class.value, VehicleClass::kMotorcycle);
+  EXPECT_EQ(rider.crash.striking.value, "V1");
+  const auto appositive = kExtractor.Extract(
+      "A van heading north struck a hatchback heading west. The hatchback, a 2015 Mazda 3, spun into a hedge.");
+  EXPECT_EQ(appositive.participant_count.value, 2);
+  const auto behind = kExtractor.Extract(
+      "I was stopped at a crosswalk when the car behind me hit me. It was a black Audi A4.");
+  ASSERT_EQ(behind.participant_count.value, 2);
+  EXPECT_EQ(behind.crash.type.value, CrashType::kRearEnd);
+}
+
 }  // namespace
 }  // namespace accsim
