@@ -256,7 +256,7 @@ Kind KindOf(const string& s) {
   static const regex kPeople(
       R"(injur|transported|year[- ]old|years old|\b\d+ year\b|medication|lenses|glasses|eyesight|fatigue|treatment|)"
       R"(hospital|trauma|ambulance|rested|health|alcohol|drugs|\bcited\b|citation|summons|ticket|interview|airbag|air bag|)"
-      R"(seat ?belt|belted|occupant|passenger|his way|her way|going home|heading home|errand|medical|license|)"
+      R"(seat ?belt|belted|occupant|passenger(?!'?s? (?:side|door|corner|fender|quarter))|\b(?:his|her) way\b|going home|heading home|errand|medical|license|)"
       R"(towed|driven from the scene|driven away|fled|contact lens|pregnan)");
   static const regex kStatement(
       R"(\b(?:stated|said|says|states|indicated|reported|advised|according to|recalled|estimated|told|admitted|claimed)\b)");

@@ -689,5 +689,14 @@ TEST(NarrativeExtractorTest, ShortDescriptionsNameNarratorMakesRidersAndAppositi
   EXPECT_EQ(behind.crash.type.value, CrashType::kRearEnd);
 }
 
+TEST(NarrativeExtractorTest, TheOtherWayAndThePassengerSideAreNotAboutPeople) {
+  const auto r = kExtractor.Extract(
+      "V1 was northbound on Elm Road. V2, coming the other way, drifted over and struck the front passenger side "
+      "of V1.");
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+}
+
 }  // namespace
 }  // namespace accsim
