@@ -76,6 +76,8 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kKmh, "kmh");
   s = std::regex_replace(s, kOneWay, "oneway");
   s = std::regex_replace(s, kNonContact, "noncontact");
+  static const regex kSingleLane(R"(\bsingle[- ]lane\b)");
+  s = std::regex_replace(s, kSingleLane, "1-lane");
   // Police abbreviations, whole words only: "nb on elm st", "a 4 ln rdwy".
   static const std::array<std::pair<regex, const char*>, 9> kAbbreviations = {{
       {regex(R"(\bnb\b)"), "northbound"},
@@ -1133,10 +1135,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   };
   {
     static const regex kPerDir(
-        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?directions?)");
+        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
-    static const regex kTotal(R"(\b(\d)[- ]lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per)))");
+    static const regex kTotal(R"(\b(\d)[- ]lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way)))");
     static const regex kOneWayHere(R"(\boneway\b)");
     std::vector<RoadStatement> roads;
     for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1285,7 +1287,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // "divided by two solid yellow lines" is paint, not a divided road; a
     // freeway counts when the crash is on it, not "a nearby interstate".
     static const regex kDivided(
-        R"(\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
+        R"(\bdual carriageway\b|\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
     static const regex kUndivided(R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b)");
     if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);
     else if (Has(scene, kDivided)) r.road.divided.Set(true, Provenance::kStated);

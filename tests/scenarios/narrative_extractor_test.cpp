@@ -698,5 +698,18 @@ TEST(NarrativeExtractorTest, TheOtherWayAndThePassengerSideAreNotAboutPeople) {
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
 }
 
+TEST(NarrativeExtractorTest, LanesEachWayDualCarriagewayAndSingleLane) {
+  const auto each_way = kExtractor.Extract(
+      "Harbour Road has three lanes each way. V1 was westbound in the left lane. V1 struck the rear of V2.");
+  EXPECT_EQ(each_way.road.lanes_per_direction.value, 3);
+  EXPECT_EQ(each_way.road.lanes_total.value, 6);
+  const auto dual = kExtractor.Extract(
+      "V1 was travelling north on a dual carriageway at 60 mph. V1 struck the rear of V2.");
+  EXPECT_TRUE(dual.road.divided.value);
+  const auto ramp = kExtractor.Extract(
+      "V1 was on a single-lane ramp behind V2. V2 braked and V1 struck the rear of V2.");
+  EXPECT_EQ(ramp.road.lanes_total.value, 1);
+}
+
 }  // namespace
 }  // namespace accsim
