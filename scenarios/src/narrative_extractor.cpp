@@ -347,6 +347,14 @@ VehicleClass ClassOf(const string& d) {
   return VehicleClass::kCar;
 }
 
+// A junction named only as a distance away ("300 ft south of the next cross
+// street", "halfway between 2 cross streets") is not where the crash was.
+string WithoutDistantJunctions(const string& s) {
+  static const regex kDistant(
+      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b)");
+  return std::regex_replace(s, kDistant, " ");
+}
+
 string EscapeRegex(const string& s) {
   string out;
   for (char c : s) {
@@ -1108,12 +1116,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   for (const Sentence& s : sentences) {
     if (s.kind == Kind::kNarrative || s.kind == Kind::kStatement) scene += s.text;
   }
+  scene = WithoutDistantJunctions(scene);
   static const regex kTJunction(
       R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
   static const regex kIntersection(
-      R"(\bintersection\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway))");
+      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway))");
   static const regex kDriveway(
-      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b)");
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b|\bpetrol station\b|\bcar park\b|\bentrance (?:of|to) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot)\b)");
   static const regex kRamp(R"(\b(?:on|off|entrance|exit)?[- ]?ramp\b)");
   static const regex kCurve(R"(\bcurv(?:e|ed|ing)\b)");
   if (Has(scene, kTJunction)) r.road.kind.Set(RoadKind::kTJunction, Provenance::kStated);
@@ -1762,15 +1771,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     for (size_t i = 0; i < sentences.size() && (i <= impact || impact == sentences.size()); ++i) {
       if (sentences[i].kind == Kind::kNarrative) pre += sentences[i].text;
     }
+    pre = WithoutDistantJunctions(pre);
     static const regex kAtIntersection(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b)");
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b)");
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
     static const regex kIntersectionWord(R"(\bintersection\b)");
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
-    } else if (Has(impact_text, kIntersectionWord) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
+    } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);

@@ -711,5 +711,24 @@ TEST(NarrativeExtractorTest, LanesEachWayDualCarriagewayAndSingleLane) {
   EXPECT_EQ(ramp.road.lanes_total.value, 1);
 }
 
+TEST(NarrativeExtractorTest, AJunctionAtADistanceIsNotTheCrashLocation) {
+  const auto away = kExtractor.Extract(
+      "V1 WAS SB ON MAPLE AVE ABOUT 200 FT NORTH OF THE NEXT CROSS STREET. FRONT OF V1 STRUCK REAR OF V2.");
+  EXPECT_EQ(away.crash.location.value, CrashLocation::kSegment);
+  const auto between = kExtractor.Extract(
+      "V2 was stopped in traffic midway between two cross streets when V1 struck the rear of V2.");
+  EXPECT_EQ(between.crash.location.value, CrashLocation::kSegment);
+  const auto meets = kExtractor.Extract(
+      "V1 was waiting at the lights where the B210 meets Mill Lane. V2 struck the rear of V1.");
+  EXPECT_EQ(meets.crash.location.value, CrashLocation::kJunction);
+  const auto junction = kExtractor.Extract(
+      "V1 was travelling north at the junction. V2 struck the left side of V1.");
+  EXPECT_EQ(junction.crash.location.value, CrashLocation::kJunction);
+  const auto petrol = kExtractor.Extract(
+      "V2 turned right into the entrance of a petrol station across the path of V1. V1 struck the left side of "
+      "V2.");
+  EXPECT_EQ(petrol.crash.location.value, CrashLocation::kDriveway);
+}
+
 }  // namespace
 }  // namespace accsim
