@@ -1647,13 +1647,36 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // A turner from a side road, driveway or parking lot enters the other's
     // path (turn into path); one turning off the road crosses it (turn across path).
     static const regex kFromSide(
-        R"(\b(?:from|out of|exiting|leaving|pulling out|pulled out|entered the (?:road|roadway|street|highway) from)\b[^.]{0,40}?\b(?:side (?:road|street)|driveway|parking|lot|private|alley|station|stop sign|minor road|intersecting)|\bonto\b)");
+        R"(\b(?:from|out of|exiting|leaving|pulling out|pulled out|entered the (?:road|roadway|street|highway) from)\b[^.]{0,40}?\b(?:side (?:road|street)|driveway|parking|lot|private|alley|station|stop sign|minor road|intersecting))");
+    // "turned left onto oak ave" enters a road; when the other vehicle came
+    // the opposite way on the road the turner left, the turn crosses its path.
+    static const regex kOnto(R"(\bonto\b)");
+    static const regex kOncoming(
+        R"(\b(?:the other way|the opposite way|oncoming|(?:from|in) the opposite direction|opposing (?:traffic|direction))\b)");
     bool turner_from_side = false;
     if (turner) {
+      const VehicleRecord* other = turner == a ? b : a;
+      // A turner whose only direction is the road it turns onto ("pulled out
+      // to turn left onto eastbound route 30") did not come the opposite way.
+      static const regex kOntoBound(R"(\bonto\s+(?:the\s+)?(north|south|east|west)bound\b)");
+      bool destination_only = false;
+      for (const Segment& seg : segments) {
+        smatch om;
+        if (seg.vehicle == std::stoi(turner->id.substr(1)) && std::regex_search(seg.text, om, kOntoBound) &&
+            turner->travel.value && CompassWord(om[1].str()) == *turner->travel.value) {
+          destination_only = true;
+        }
+      }
+      bool other_oncoming = opposite && !destination_only;
+      for (const Segment& seg : segments) {
+        if (seg.vehicle == std::stoi(other->id.substr(1)) && seg.sentence <= impact && Has(seg.text, kOncoming)) {
+          other_oncoming = true;
+        }
+      }
       const size_t ti = static_cast<size_t>(turner->id[1] - '0');
       for (const Segment& seg : segments) {
         if (seg.vehicle == static_cast<int>(ti) && seg.sentence <= impact && sentences[seg.sentence].kind != Kind::kCoding &&
-            Has(seg.text, kFromSide)) {
+            (Has(seg.text, kFromSide) || (!other_oncoming && Has(seg.text, kOnto)))) {
           turner_from_side = true;
         }
       }

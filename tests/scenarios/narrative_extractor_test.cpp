@@ -730,5 +730,19 @@ TEST(NarrativeExtractorTest, AJunctionAtADistanceIsNotTheCrashLocation) {
   EXPECT_EQ(petrol.crash.location.value, CrashLocation::kDriveway);
 }
 
+TEST(NarrativeExtractorTest, LeavingTheRoadOntoAnotherAcrossOncomingTrafficIsTurnAcrossPath) {
+  const auto across = kExtractor.Extract(
+      "V1 was northbound on Lark Street. V2 was southbound on Lark Street and turned left onto Fern Road in front "
+      "of V1. The front of V1 struck the right side of V2.");
+  EXPECT_EQ(across.crash.type.value, CrashType::kTurnAcrossPath);
+  const auto oncoming = kExtractor.Extract(
+      "I turned left from Lark Street onto Fern Road. A van coming the other way struck the right side of my car.");
+  EXPECT_EQ(oncoming.crash.type.value, CrashType::kTurnAcrossPath);
+  const auto into = kExtractor.Extract(
+      "V2 was stopped at the stop sign on Fern Road. V2 pulled out to turn left onto northbound Lark Street and was "
+      "struck on the left side by V1, which was traveling southbound on Lark Street.");
+  EXPECT_EQ(into.crash.type.value, CrashType::kTurnIntoPath);
+}
+
 }  // namespace
 }  // namespace accsim
