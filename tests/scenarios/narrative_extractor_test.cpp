@@ -744,5 +744,19 @@ TEST(NarrativeExtractorTest, LeavingTheRoadOntoAnotherAcrossOncomingTrafficIsTur
   EXPECT_EQ(into.crash.type.value, CrashType::kTurnIntoPath);
 }
 
+TEST(NarrativeExtractorTest, OvertakingWordsAndAMoveBetweenNamedLanes) {
+  const auto began = kExtractor.Extract(
+      "V1 was travelling north. V2 was travelling south and began overtaking a bus. V2 collided head-on with V1.");
+  EXPECT_EQ(began.vehicles[1].movement.value, Movement::kPassing);
+  const auto slower = kExtractor.Extract(
+      "V2 pulled out to pass a slower van and struck V1, which was travelling the other way.");
+  EXPECT_EQ(slower.vehicles[1].movement.value, Movement::kPassing);
+  const auto lanes = kExtractor.Extract(
+      "V1 was eastbound in the offside lane. V2 moved from the nearside lane into the offside lane and its front "
+      "struck the left side of V1.");
+  EXPECT_EQ(lanes.vehicles[1].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(lanes.crash.type.value, CrashType::kSideswipeSame);
+}
+
 }  // namespace
 }  // namespace accsim
