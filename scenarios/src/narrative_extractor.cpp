@@ -172,8 +172,9 @@ Numbered NameUnnumberedVehicles(const string& s) {
     out.descriptions[1] = m[1].str();
     out.text = std::regex_replace(std::regex_replace(out.text, kMine, "v1"), kFirstPerson, "v1");
     next = 2;
-  } else if (Has(out.text, kFirstPerson)) {
-    // A narrator known only as "i" / "me" drives v1.
+  } else if (static const regex kQuoted(R"("[^"]{0,400}")"); Has(std::regex_replace(out.text, kQuoted, " "), kFirstPerson)) {
+    // A narrator known only as "i" / "me" drives v1; a quoted "i" is someone
+    // else speaking ("'i saw it coming,' a witness said").
     out.text = std::regex_replace(out.text, kFirstPerson, "v1");
     next = 2;
   }

@@ -42,12 +42,12 @@ TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
   const ExtractionScore s =
       EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/report_styles", NarrativeExtractor{});
   EXPECT_EQ(s.n, 36);
-  EXPECT_GE(s.attributes.at("participant_count"), 0.75);
-  EXPECT_GE(s.attributes.at("speed_limit"), 0.90);
-  EXPECT_GE(s.attributes.at("lane_count"), 0.75);
-  EXPECT_GE(s.attributes.at("collision_location"), 0.83);
-  EXPECT_GE(s.attributes.at("driving_actions"), 0.75);
-  EXPECT_GE(s.attributes.at("crash_type"), 0.68);
+  EXPECT_GE(s.attributes.at("participant_count"), 0.97);
+  EXPECT_GE(s.attributes.at("speed_limit"), 0.92);
+  EXPECT_GE(s.attributes.at("lane_count"), 0.94);
+  EXPECT_GE(s.attributes.at("collision_location"), 0.97);
+  EXPECT_GE(s.attributes.at("driving_actions"), 0.85);
+  EXPECT_GE(s.attributes.at("crash_type"), 0.90);
 }
 
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {

@@ -358,6 +358,17 @@ TEST(NarrativeExtractorTest, AVehicleCrossingTheThroughRoadsAxisIsOnTheCrossStre
   EXPECT_EQ(through.road.lanes_total.value, 6);
 }
 
+TEST(NarrativeExtractorTest, AQuotedWitnessIsNotTheNarrator) {
+  const auto r = kExtractor.Extract(
+      "A pickup heading west on Route 9 crossed the center line and struck a sedan head-on. \"I saw it coming,\" a "
+      "witness said.");
+  EXPECT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+  const auto claim = kExtractor.Extract("I was stopped at the light when a pickup hit me from behind.");
+  EXPECT_EQ(claim.participant_count.value, 2);
+  EXPECT_EQ(claim.crash.struck.value, "V1");
+}
+
 TEST(NarrativeExtractorTest, PreEventMovementRoundTripsThroughJson) {
   const auto r = kExtractor.Extract(
       "V1 stopped at the stop sign and then turned left. V2 was traveling east. V2 struck V1.");
