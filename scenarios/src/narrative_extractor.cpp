@@ -107,12 +107,13 @@ string Normalise(std::string_view in) {
   }};
   for (const auto& [re, to] : kOrdinals) s = std::regex_replace(s, re, to);
   // Vehicle references: "vehicle #1", "vehicle no. 2", "veh. 3", "v-1", "unit 2".
+  // A number followed by a unit ("car 2 mph", "unit 3 lanes") is not a vehicle.
+  static const string kNotAUnit = R"((?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))";
   static const regex kVehicle(
-      R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))");
+      R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kVehicle, "v$1");
   // Police shorthand: "u2" (unit 2) and "d1" (driver 1), only as whole words.
-  static const regex kShortRef(
-      R"(\b[ud]([1-9])\b(?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))");
+  static const regex kShortRef(R"(\b[ud]([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kShortRef, "v$1");
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
   static const regex kOrdinalVehicle(R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b)");
@@ -652,11 +653,6 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
   return std::nullopt;
 }
 
-// The usual U.S. posted limit of a road class the report names, for reports
-// that do not state one (CIREN's narratives never do): freeways 70 mph,
-// rural roads and highways 55, city streets (urban, downtown, one-way
-// streets) 30, residential streets 25, private roads and parking lots the
-// crash happened on 15. Unnamed classes get none.
 // The limit a road class usually has in the U.S., for reports that name the
 // class but not the limit: freeways 70 mph, parking lots and private roads
 // 15, residential streets 25, rural roads and state or county highways 55,
