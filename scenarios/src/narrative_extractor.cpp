@@ -927,7 +927,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     bool perceived = false;  // what another driver saw this vehicle do
   };
   static const regex kSubjectBefore(
-      R"((?:^|[,:(.]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
+      R"((?:^|[,:(.]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time|stated|said|reported|indicated|advised|claimed|explained|admitted|recalled))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
   // "behind v2, a jetta, which was stopped", and appositives "v2, a parked
   // and unoccupied ciera": both describe that vehicle.
   static const regex kRelativeAfter(
@@ -991,16 +991,24 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else if (s.kind == Kind::kCoding && !s.refs.empty()) {
       focus = s.refs.front().vehicle;
     }
+    // Where a segment of vehicle k's ends: at the next start of another vehicle.
+    auto end_of = [&](size_t k) {
+      for (size_t q = k + 1; q < starts.size(); ++q) {
+        if (starts[q].vehicle != starts[k].vehicle) return starts[q].pos;
+      }
+      return s.text.size();
+    };
+    // "v2 and v3 were slowing": a coordinated subject shares its predicate.
+    static const regex kCoordinated(R"(^v[1-9]\s*(?:,\s*(?:and\s+)?|and\s+)$)");
     for (size_t k = 0; k < starts.size(); ++k) {
       if (k > 0 && starts[k - 1].vehicle == starts[k].vehicle) continue;
-      size_t end = s.text.size();
+      size_t from = starts[k].pos, end = end_of(k);
       for (size_t q = k + 1; q < starts.size(); ++q) {
-        if (starts[q].vehicle != starts[k].vehicle) {
-          end = starts[q].pos;
-          break;
-        }
+        if (!Has(s.text.substr(starts[q - 1].pos, starts[q].pos - starts[q - 1].pos), kCoordinated)) break;
+        from = starts[q].pos;
+        end = end_of(q);
       }
-      segments.push_back({starts[k].vehicle, i, cut(starts[k].pos, end), starts[k].perceived});
+      segments.push_back({starts[k].vehicle, i, cut(from, end), starts[k].perceived});
     }
   }
 
@@ -1029,6 +1037,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kBeforeTheCrash(
         R"(\b(?:before|prior to)\s+(?:making|starting|beginning|initiating|entering|turning|pulling|the (?:turn|crash|collision|impact)|impact)\b)");
     const bool told_of_before = !pre_impact && Has(seg.text, kBeforeTheCrash);
+    // A vehicle first met after the impact, with its state in a relative
+    // clause ("was pushed into v3, a honda, which was stopped at the light"):
+    // that state is from before the crash.
+    static const regex kRelativeState(
+        R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)\b)");
+    const bool state_in_relative = !pre_impact && Has(seg.text, kRelativeState);
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
       if (!v.travel.known() && (kind == Kind::kNarrative || pre_impact)) {
@@ -1056,7 +1070,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (kind == Kind::kNarrative && pre_impact && !seg.perceived) {
       ReadMovement(seg.text, narrative[vi]);
     } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, kParkedOnly)) ||
-               (kind == Kind::kNarrative && told_of_before)) {
+               (kind == Kind::kNarrative && (told_of_before || state_in_relative))) {
       ReadMovement(seg.text, statement[vi]);
     } else if (kind == Kind::kCoding) {
       MovementEvidence* other = nullptr;
@@ -1412,6 +1426,31 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (!found && std::regex_search(s.text, m, kBare)) {
         limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, static_cast<size_t>(m.position())),
                           AxisIn(s.text.substr(0, static_cast<size_t>(m.position()))), order++});
+      }
+    }
+    // No limit word anywhere: a value that describes the road itself ("a
+    // 45 mph two-lane road", "the road is two lanes, 45 mph") is its limit;
+    // one after a travel word is a vehicle's speed.
+    if (limits.empty()) {
+      static const regex kRoadValue(
+          R"(\b(\d{2,3})\s*(kmh|mph)\s+(?:(?!(?:on|in|along|down|up|at|when|while|as|and|through|into|onto|toward|towards|near|before|after|from|of|with)\b)[\w-]+\s+){0,3}?(?:road|roadway|street|highway|avenue|boulevard|route|zone|stretch|section|freeway|interstate|carriageway)\b)");
+      static const regex kRoadSubject(
+          R"(^(?:the\s+)?(?:[\w-]+\s+){0,3}?(?:road|roadway|street|highway|avenue|boulevard|route|freeway|interstate|carriageway|rdwy|st|ave|rd|dr)\s+(?:is|was)\b[^.]*?\b(\d{2,3})\s*(kmh|mph)\b)");
+      static const regex kTravelWord(
+          R"(\b(?:travel\w*|going|driving|doing|moving|speed|estimated|approximately|about|around|between|at)\s+(?:\w+\s+){0,2}$)");
+      for (const Sentence& s : sentences) {
+        if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
+        smatch m;
+        const bool subject = std::regex_search(s.text, m, kRoadSubject) && s.refs.empty();
+        if (!subject && !std::regex_search(s.text, m, kRoadValue)) continue;
+        const size_t pos = static_cast<size_t>(m.position(1));
+        if (Has(s.text.substr(pos > 30 ? pos - 30 : 0, pos > 30 ? 30 : pos), kTravelWord)) continue;
+        const double value = std::stod(m[1].str());
+        const bool kmh = m[2].str() == "kmh";
+        if (value < 5 || value > 180) continue;
+        limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
+                          AxisIn(s.text.substr(0, pos)), order++});
+        break;
       }
     }
     const Limit* pick = nullptr;

@@ -769,5 +769,55 @@ TEST(NarrativeExtractorTest, OvertakingWordsAndAMoveBetweenNamedLanes) {
   EXPECT_EQ(lanes.crash.type.value, CrashType::kSideswipeSame);
 }
 
+TEST(NarrativeExtractorTest, ACoordinatedSubjectSharesItsState) {
+  const auto r = kExtractor.Extract(
+      "Unit 1 was westbound in the left lane. Unit 2 and Unit 3 were ahead of Unit 1 and were slowing for a red "
+      "signal. Unit 1 struck the rear of Unit 2, pushing it into Unit 3.");
+  ASSERT_EQ(r.vehicles.size(), 3U);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kSlowing);
+  EXPECT_EQ(r.vehicles[2].movement.value, Movement::kSlowing);
+  const auto listed = kExtractor.Extract(
+      "Vehicle 1, Vehicle 2 and Vehicle 3 were northbound. Vehicle 2 and Vehicle 3 were stationary in a queue. "
+      "Vehicle 1 struck the rear of Vehicle 2.");
+  EXPECT_EQ(listed.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(listed.vehicles[2].movement.value, Movement::kStopped);
+  EXPECT_EQ(listed.vehicles[0].movement.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, AReportedClauseHasItsOwnSubject) {
+  const auto r = kExtractor.Extract(
+      "V1 was eastbound on Maple Drive. V2 was in a private driveway. D1 stated V2 backed out directly in front "
+      "of him. The front of V1 struck the left side of V2.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kBacking);
+}
+
+TEST(NarrativeExtractorTest, AStateInARelativeClauseAfterTheImpactIsFromBefore) {
+  const auto r = kExtractor.Extract(
+      "V1 was westbound. V2 was northbound and entered the intersection against a red signal. The front of V2 "
+      "struck the left side of V1. V1 was redirected into V3, a 2011 Honda Pilot, which was stopped facing south.");
+  ASSERT_EQ(r.vehicles.size(), 3U);
+  EXPECT_EQ(r.vehicles[2].movement.value, Movement::kStopped);
+  // Told after the impact without a relative clause, a stop is the outcome.
+  const auto after = kExtractor.Extract("V1 was northbound. V2 was southbound. V1 struck V2 head-on. V2 stopped in the ditch.");
+  EXPECT_EQ(after.vehicles[1].movement.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, AValueThatDescribesTheRoadIsItsLimit) {
+  const auto comma = kExtractor.Extract(
+      "I was driving south on Ridge Road when I hit ice on a bend and slid into a tree. The road is two lanes, 45 "
+      "mph.");
+  EXPECT_NEAR(comma.road.speed_limit_mps.value, 45 * 0.44704, 1e-6);
+  EXPECT_EQ(comma.road.speed_limit_mps.source, Provenance::kStated);
+  const auto adjective = kExtractor.Extract(
+      "V1 was northbound on a 35 mph two-lane road at about 50 mph when it struck V2, which was stopped.");
+  EXPECT_NEAR(adjective.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+  // A vehicle's speed on the road is not its limit.
+  const auto speed = kExtractor.Extract(
+      "V1 was traveling 60 mph on the highway when it struck the rear of V2. V2 was slowing for traffic.");
+  EXPECT_NE(speed.road.speed_limit_mps.source, Provenance::kStated);
+}
+
 }  // namespace
 }  // namespace accsim
