@@ -162,6 +162,9 @@ Numbered NameUnnumberedVehicles(const string& s) {
   // "the sedan, a kia optima," and "it was a nissan altima" describe a
   // vehicle already named.
   static const regex kAppositive(R"((?:\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*|\bit (?:was|is)\s+)$)");
+  // "a sedan, a kia optima,": a make or model year after an unnamed noun
+  // names it (a list of vehicles names a noun each: "a car, a van and ...").
+  static const regex kNamedAppositive(R"(\b(?:a|an)\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*$)");
   static const regex kFirstPerson(R"(\b(?:i|me)\b(?!-))");
   Numbered out{s, {}};
   std::map<string, int> owner;  // head noun -> vehicle, 0 when two share it
@@ -208,6 +211,13 @@ Numbered NameUnnumberedVehicles(const string& s) {
     const size_t at = static_cast<size_t>(im[0].first - out.text.cbegin());
     const size_t back = std::min<size_t>(at, 60);
     if (!im[8].matched && std::regex_search(out.text.substr(at - back, back), kAppositive)) continue;
+    const bool follows_numbered = next > 1 && from != out.text.cbegin() && im[0].first - from <= 3;
+    if ((im[3].matched || im[5].matched) && follows_numbered &&
+        std::regex_search(out.text.substr(at - back, back), kNamedAppositive)) {
+      out.descriptions[next - 1] = phrase;
+      for (const string& head : heads) owner[head] = owner.count(head) ? 0 : next - 1;
+      continue;
+    }
     rebuilt.append(from, im[0].first);
     rebuilt += "v" + std::to_string(next);
     out.descriptions[next] = phrase;
@@ -499,7 +509,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
       R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b)");
-  static const regex kSlow(R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b)");
+  static const regex kSlow(
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -1038,10 +1049,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         R"(\b(?:before|prior to)\s+(?:making|starting|beginning|initiating|entering|turning|pulling|the (?:turn|crash|collision|impact)|impact)\b)");
     const bool told_of_before = !pre_impact && Has(seg.text, kBeforeTheCrash);
     // A vehicle first met after the impact, with its state in a relative
-    // clause ("was pushed into v3, a honda, which was stopped at the light"):
-    // that state is from before the crash.
+    // clause ("was pushed into v3, a honda, which was stopped at the light"),
+    // or one said to be parked: that state is from before the crash.
     static const regex kRelativeState(
-        R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)\b)");
+        R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)|(?:was|were|had been)\s+(?:legally\s+|lawfully\s+)?(?:parked|unoccupied))\b)");
     const bool state_in_relative = !pre_impact && Has(seg.text, kRelativeState);
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
@@ -1106,6 +1117,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const Compass c = *o.travel.value;
         v.travel.Set(relation[i] > 0 ? c : static_cast<Compass>((static_cast<int>(c) + 2) % 4), Provenance::kInferred);
       }
+    }
+  }
+  // "v1 failed to slow for stopped traffic, striking v2, which was pushed
+  // into v3": the vehicles it ran into were that traffic.
+  {
+    static const regex kIntoQueue(
+        R"(\bv([1-9])\b[^.]{0,40}?\b(?:failed to|did not|didn't|could not|couldn't|was unable to|unable to)\s+(?:\w+\s+)?(?:slow|stop)\w*\s+(?:\w+\s+){0,2}?for\s+(?:the\s+)?(?:(stopped|stationary|queued|backed[- ]up)|slowing|slowed|slower)\s+(?:traffic|vehicles|cars)\b)");
+    for (const Sentence& s : sentences) {
+      smatch m;
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kIntoQueue)) continue;
+      const int runner = std::stoi(m[1].str());
+      for (size_t i = 1; i < narrative.size(); ++i) {
+        if (static_cast<int>(i) == runner || narrative[i].any_narrative() || statement[i].any_narrative()) continue;
+        (m[2].matched ? statement[i].stopped : statement[i].slowing) = true;
+      }
+      break;
     }
   }
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
@@ -1525,6 +1552,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!subject && !object && !refs.empty()) subject = refs.front().vehicle;
     // "v1 and v2 collided": no object after the verb; the first named is
     // taken as the striker, the other as struck.
+    // "v1 had slowed when v2 struck it": a pronoun object is the other
+    // vehicle named before the verb.
+    static const regex kPronounObject(R"(^\s*(?:\w+\s+)?(?:it|him|her|them)\b)");
+    const bool pronoun_object = vm.empty() ? false : Has(vm.suffix().str(), kPronounObject);
+    if (!object && subject && pronoun_object) {
+      for (const Ref& ref : refs) {
+        if (ref.pos < verb_pos && ref.vehicle != subject) object = ref.vehicle;
+      }
+    }
     if (!object && subject) {
       std::vector<int> before;
       for (const Ref& ref : refs) {
@@ -1603,7 +1639,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       note(striker, "front");
       note(struck, "rear");
     }
-    if (Has(s, kRearEndPhrase)) {
+    static const regex kFromBehind(R"(\b(?:from behind|from the rear|in the rear)\b)");
+    if (Has(s, kRearEndPhrase) || Has(s, kFromBehind)) {
       note(striker, "front");
       note(struck, "rear");
     }

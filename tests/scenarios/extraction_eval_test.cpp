@@ -44,7 +44,7 @@ TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
       EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/report_styles", NarrativeExtractor{});
   EXPECT_EQ(s.n, 36);
   ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.94},
-                   {"collision_location", 0.97}, {"driving_actions", 0.90}, {"crash_type", 0.90}});
+                   {"collision_location", 0.97}, {"driving_actions", 0.93}, {"crash_type", 0.97}});
 }
 
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {

@@ -819,5 +819,39 @@ TEST(NarrativeExtractorTest, AValueThatDescribesTheRoadIsItsLimit) {
   EXPECT_NE(speed.road.speed_limit_mps.source, Provenance::kStated);
 }
 
+TEST(NarrativeExtractorTest, APronounObjectAndFromBehindMakeARearEnd) {
+  const auto r = kExtractor.Extract(
+      "A motorcycle was northbound on the ramp. The motorcycle had slowed for a queue when a sedan, a Kia Optima, "
+      "struck it from behind.");
+  ASSERT_EQ(r.vehicles.size(), 2U);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kSlowing);
+  // Two vehicles before an intransitive verb are still striker and struck in order.
+  const auto collided = kExtractor.Extract("V1 was eastbound. V2 was westbound. V1 and V2 collided head-on.");
+  EXPECT_EQ(collided.crash.striking.value, "V1");
+  EXPECT_EQ(collided.crash.struck.value, "V2");
+}
+
+TEST(NarrativeExtractorTest, TheVehiclesRunIntoWereTheStoppedTraffic) {
+  const auto r = kExtractor.Extract(
+      "A tractor-trailer failed to slow for stopped traffic on eastbound Interstate 80, striking a Toyota Corolla, "
+      "which was pushed into a Chevy Malibu, state police said.");
+  ASSERT_EQ(r.vehicles.size(), 3U);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[2].movement.value, Movement::kStopped);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  // Slowing traffic makes the vehicles ahead slowing; a vehicle with its own state keeps it.
+  const auto slowing = kExtractor.Extract(
+      "V1 did not slow for slowing traffic and struck the rear of V2. V3 was parked on the shoulder and was struck by "
+      "V2.");
+  EXPECT_EQ(slowing.vehicles[1].movement.value, Movement::kSlowing);
+  EXPECT_EQ(slowing.vehicles[2].movement.value, Movement::kStopped);
+  EXPECT_TRUE(slowing.vehicles[2].parked.value);
+}
+
 }  // namespace
 }  // namespace accsim
