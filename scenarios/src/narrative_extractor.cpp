@@ -1197,7 +1197,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         rs.owner = owner_at(s, pos);
         const size_t from = pos > 60 ? pos - 60 : 0;
         const string around = s.text.substr(from, pos - from + static_cast<size_t>(m.length(0)) + 40);
-        rs.axis = AxisIn(around);
+        // The road's axis: named up to the count ("an east-west roadway with
+        // two lanes each way"), else after it ("a 4-lane road running
+        // north-south"); the next road's ("..., and a northbound one-way")
+        // is not this one's.
+        rs.axis = AxisIn(s.text.substr(from, pos - from + static_cast<size_t>(m.length(0))));
+        if (!rs.axis) rs.axis = AxisIn(around);
         // One-way belongs to this road only when no other road phrase
         // (", and a ...") sits between the count and the word.
         const string near_before = s.text.substr(pos > 25 ? pos - 25 : 0, pos > 25 ? 25 : pos);
@@ -1285,6 +1290,18 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         return rs.cross && rs.owner <= 1 && (!rs.axis || *rs.axis == v1_axis);
       });
       if (through && cross && *through->axis != v1_axis && (!best->axis || *best->axis != v1_axis)) best = cross;
+    }
+    // At a junction, V1 travelling across every road the report counts
+    // lanes of was on one it does not describe: an ordinary two-lane,
+    // two-way road.
+    const bool junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
+    if (best && junction && v1_axis >= 0 && best->owner != 1 &&
+        std::all_of(roads.begin(), roads.end(), [&](const RoadStatement& rs) {
+          return rs.axis && *rs.axis != v1_axis && !rs.cross && rs.owner != 1;
+        })) {
+      r.road.lanes_total.Set(2, Provenance::kInferred);
+      r.road.lanes_per_direction.Set(1, Provenance::kInferred);
+      best = nullptr;
     }
     if (best) {
       // Combine statements about the same road (a total in one sentence, the

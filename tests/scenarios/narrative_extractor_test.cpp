@@ -853,5 +853,28 @@ TEST(NarrativeExtractorTest, TheVehiclesRunIntoWereTheStoppedTraffic) {
   EXPECT_TRUE(slowing.vehicles[2].parked.value);
 }
 
+TEST(NarrativeExtractorTest, V1AcrossEveryDescribedRoadWasOnAnUndescribedTwoLaneRoad) {
+  const auto stem = kExtractor.Extract(
+      "The crash occurred in the westbound lanes of a five-lane roadway with a T-intersection. V1 was southbound "
+      "approaching the stop sign. V2 was westbound in the right lane. V1 turned left and the front of V2 struck the "
+      "left side of V1.");
+  EXPECT_EQ(stem.road.lanes_total.value, 2);
+  EXPECT_EQ(stem.road.lanes_total.source, Provenance::kInferred);
+  // V1 on the described road keeps its count.
+  const auto through = kExtractor.Extract(
+      "The crash occurred in the westbound lanes of a five-lane roadway with a T-intersection. V2 was southbound "
+      "approaching the stop sign. V1 was westbound in the right lane. V2 turned left and the front of V1 struck the "
+      "left side of V2.");
+  EXPECT_EQ(through.road.lanes_total.value, 5);
+  EXPECT_EQ(through.road.lanes_total.source, Provenance::kStated);
+  // A road's axis is the one named before its lane count, not the next road's.
+  const auto axes = kExtractor.Extract(
+      "This crash occurred at the intersection of an east-west roadway with two lanes in each direction, and a "
+      "one-way northbound roadway. V1 was traveling westbound in the left lane. V2 was traveling northbound. The "
+      "front of V2 contacted the left side of V1.");
+  EXPECT_EQ(axes.road.lanes_total.value, 4);
+  EXPECT_EQ(axes.road.lanes_per_direction.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
