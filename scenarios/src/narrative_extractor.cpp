@@ -1880,9 +1880,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
 
   // ---- Location relative to a junction.
   {
-    string pre;  // narrative up to and including the impact
-    for (size_t i = 0; i < sentences.size() && (i <= impact || impact == sentences.size()); ++i) {
-      if (sentences[i].kind == Kind::kNarrative) pre += sentences[i].text;
+    // Narrative up to and including the impact, and what a later sentence
+    // tells in the past perfect ("v2 had been stopped, intending to turn into
+    // the parking lot").
+    static const regex kHadBefore(R"(\bhad\s+(?:\w+\s+)?(?:been|stopped|slowed|begun|started|pulled|entered)\b)");
+    string pre;
+    for (size_t i = 0; i < sentences.size(); ++i) {
+      const bool before = i <= impact || impact == sentences.size() || Has(sentences[i].text, kHadBefore);
+      if (sentences[i].kind == Kind::kNarrative && before) pre += sentences[i].text;
     }
     pre = WithoutDistantJunctions(pre);
     static const regex kAtIntersection(

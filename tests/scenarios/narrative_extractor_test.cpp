@@ -876,5 +876,18 @@ TEST(NarrativeExtractorTest, V1AcrossEveryDescribedRoadWasOnAnUndescribedTwoLane
   EXPECT_EQ(axes.road.lanes_per_direction.value, 2);
 }
 
+TEST(NarrativeExtractorTest, APastPerfectSentenceAfterTheImpactPlacesTheCrash) {
+  const auto r = kExtractor.Extract(
+      "This crash occurred on a two lane undivided straight roadway. V1 was traveling south when it impacted the rear "
+      "of V2. V1 came to rest on the shoulder. V2 had been stopped in the northbound lane waiting to make a left turn "
+      "into a parking lot.");
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kDriveway);
+  // Where a vehicle came to rest after the crash does not place it.
+  const auto rest = kExtractor.Extract(
+      "This crash occurred on a two lane undivided straight roadway. V1 was traveling south when it impacted the rear "
+      "of V2, which was stopped. V2 came to rest in a parking lot.");
+  EXPECT_EQ(rest.crash.location.value, CrashLocation::kSegment);
+}
+
 }  // namespace
 }  // namespace accsim
