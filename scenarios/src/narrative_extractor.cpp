@@ -1185,7 +1185,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
-    static const regex kTotal(R"(\b(\d)[- ]lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way)))");
+    static const regex kTotal(
+        R"(\b(\d)[- ]lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
     static const regex kOneWayHere(R"(\boneway\b)");
     std::vector<RoadStatement> roads;
     for (size_t i = 0; i < sentences.size(); ++i) {

@@ -889,5 +889,14 @@ TEST(NarrativeExtractorTest, APastPerfectSentenceAfterTheImpactPlacesTheCrash) {
   EXPECT_EQ(rest.crash.location.value, CrashLocation::kSegment);
 }
 
+TEST(NarrativeExtractorTest, LanesThatHeadOneWayAreNotTheRoadsTotal) {
+  const auto r = kExtractor.Extract(
+      "This crash occurred in the eastbound lanes (two lanes head east and one heads west) of a three lane "
+      "undivided roadway. V1 was traveling east in lane two. V2 was traveling east in lane one. V1 struck the left "
+      "side of V2.");
+  EXPECT_EQ(r.road.lanes_total.value, 3);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
