@@ -971,6 +971,20 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         starts.push_back({ref.pos, ref.vehicle, true});
       }
     }
+    // "the light for v1 turned green and the vehicle started turning": "the
+    // vehicle" as a subject is the vehicle named last before it.
+    static const regex kTheVehicle(R"(\bthe vehicle\b(?!'s|\s+(?:of|in|ahead|behind|that|which)\b))");
+    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTheVehicle); it != std::sregex_iterator(); ++it) {
+      const size_t pos = static_cast<size_t>(it->position());
+      int last = 0;
+      for (const Ref& ref : s.refs) {
+        if (ref.pos < pos) last = ref.vehicle;
+      }
+      if (last > 0 && Has(s.text.substr(pos > 40 ? pos - 40 : 0, pos > 40 ? 40 : pos), kSubjectBefore)) {
+        starts.push_back({pos, last, false});
+      }
+    }
+    std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.pos < b.pos; });
     // Text before the first start belongs to the sentence's focus (pronoun sentences, "as he stopped, ...").
     const size_t first = starts.empty() ? s.text.size() : starts.front().pos;
     // A segment that starts at a vehicle reference skips it; a continuation
@@ -1053,7 +1067,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // or one said to be parked: that state is from before the crash.
     static const regex kRelativeState(
         R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)|(?:was|were|had been)\s+(?:legally\s+|lawfully\s+)?(?:parked|unoccupied))\b)");
-    const bool state_in_relative = !pre_impact && Has(seg.text, kRelativeState);
+    // A vehicle introduced after the impact ("v2 was a 1997 dodge pickup that
+    // was stopped to make a left turn"): the introduction is background.
+    static const regex kIntroduction(R"(^v[1-9]\s+(?:was|is)\s+an?\s+(?:(?:19|20)\d\d|[a-z]+\s+(?:19|20)\d\d)\b)");
+    const bool state_in_relative = !pre_impact && (Has(seg.text, kRelativeState) || Has(seg.text, kIntroduction));
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
       if (!v.travel.known() && (kind == Kind::kNarrative || pre_impact)) {

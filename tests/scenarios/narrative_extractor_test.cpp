@@ -898,5 +898,25 @@ TEST(NarrativeExtractorTest, LanesThatHeadOneWayAreNotTheRoadsTotal) {
   EXPECT_EQ(r.road.lanes_per_direction.value, 2);
 }
 
+TEST(NarrativeExtractorTest, AnIntroductionAfterTheImpactIsBackground) {
+  const auto r = kExtractor.Extract(
+      "This crash occurred on a two-lane roadway at a T intersection. V1 was a 2005 Toyota Tundra, traveling "
+      "southbound. V1 struck V2 in the center of its rear bumper. V1 was towed. V2 was a 1997 Dodge 2500 pickup that "
+      "was traveling southbound and was stopped to make a left turn at the intersection.");
+  ASSERT_EQ(r.vehicles.size(), 2U);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, TheVehicleAsASubjectIsTheOneNamedBeforeIt) {
+  const auto r = kExtractor.Extract(
+      "V1 was a 1988 Mercedes stopped at the signal. V2 was a 2002 Mercury driving eastbound in the right lane. The "
+      "light for V1 turned green and the vehicle started turning left when the front of V2 struck the left-front "
+      "corner of V1.");
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+}
+
 }  // namespace
 }  // namespace accsim
