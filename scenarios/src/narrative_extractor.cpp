@@ -363,7 +363,7 @@ VehicleClass ClassOf(const string& d) {
 // street", "halfway between 2 cross streets") is not where the crash was.
 string WithoutDistantJunctions(const string& s) {
   static const regex kDistant(
-      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b)");
+      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b)");
   return std::regex_replace(s, kDistant, " ");
 }
 
@@ -475,6 +475,7 @@ struct MovementEvidence {
   bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
   bool coded_lane_change = false, other_says_stopped = false;
   bool rolled_stop = false, no_stop = false;
+  bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
   bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
@@ -485,17 +486,18 @@ struct MovementEvidence {
 // Reads one piece of text about a vehicle for movement statements.
 void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kStopState(
-      R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\bcame to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b)");
+      R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\bcame to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(
       R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
   static const regex kNoStop(
-      R"(\b(?:failed to|did not|didn't|never|without)\s+(?:\w+\s+)?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
+      R"(\b(?:failed to|did not|didn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+)?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
       R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
+  // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
   static const regex kLeft(
-      R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left\b|\bleft[- ]hand turn|\bleft turn\b|\bturn(?:ed|ing)? left|\b(?:made|make|making)\s+a\s+left\s+(?:onto|into)\b|\bu-?\s?turn)");
+      R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left\b|\bleft[- ]hand turn|\bleft turn\b|\bturn(?:ed|ing)? left|\b(?:made|make|making)\s+a\s+left\s+(?:onto|into)\b|\bu-?\s?turn|\bcross\w*\s+(?:over\s+)?(?:into|to)\s+(?:a|the)\s+(?:\w+\s+){0,2}?(?:driveway|parking lot|lot|alley)\b)");
   static const regex kRight(R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?right\b|\bright[- ]hand turn|\bright turn\b|\b(?:made|make|making)\s+a\s+right\s+(?:onto|into)\b)");
   // An intention is not the movement: "waiting to turn left", "intending to turn".
   static const regex kIntention(
@@ -508,7 +510,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kBack(
       R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
   static const regex kPass(
-      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b)");
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,5}?to (?:pass|overtake)\b)");
   static const regex kSlow(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due)\b)");
   static const regex kStraight(
@@ -552,6 +554,9 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   if (Has(t, kPass)) e.pass = true;
   if (Has(t, kSlow)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
+  static const regex kStarted(
+      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b)");
+  if (Has(t, kStarted)) e.started = true;
 }
 
 // NHTSA critical-event wording ("this vehicle traveling, turning left at
@@ -622,13 +627,13 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   }
   // A stop before the critical event is the pre-crash movement even when a
   // turn was intended afterwards (how NASS codes it).
-  if (e.stopped) return both(Movement::kStopped, Provenance::kStated);
+  if (e.stopped && !e.started) return both(Movement::kStopped, Provenance::kStated);
   if (e.lane_change || n.coded_lane_change) return both(Movement::kChangingLanes, Provenance::kStated);
   if (e.merge) return both(Movement::kMerging, Provenance::kStated);
   if (e.pass) return both(Movement::kPassing, Provenance::kStated);
   if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
   if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
-  if (e.straight || n.coded_straight || e.stop_cancelled) return both(Movement::kStraight, Provenance::kStated);
+  if (e.straight || n.coded_straight || e.stop_cancelled || e.started) return both(Movement::kStraight, Provenance::kStated);
   return both(Movement::kStraight, Provenance::kInferred);
 }
 
@@ -945,13 +950,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       R"(^(?:,?\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|is|had|has)\b|^,\s*an?\s)");
   // What a driver saw another vehicle do ("she saw v1 waiting to turn") is
   // about that vehicle, but the sentence stays the observer's.
-  static const regex kPerceivedBefore(R"(\b(?:saw|seen|see|seeing|observed|noticed|watched)\s*$)");
+  static const regex kPerceivedBefore(
+      R"(\b(?:saw|seen|see|seeing|observed|noticed|notice|watched|realize|realized|recognize|recognized)\s*(?:that\s+)?$)");
   static const regex kPerceivedState(
-      R"(^\s+(?:was\s+)?(?:stopped|stationary|waiting|sitting|turning|making|pulling|backing|slowing|traveling|travelling|approaching|coming|entering|exiting|changing)\b)");
+      R"(^\s+(?:was\s+|had\s+)?(?:stopped|stationary|waiting|sitting|turning|making|pulling|backing|slowing|traveling|travelling|approaching|coming|entering|exiting|changing)\b)");
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1024,7 +1030,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       return s.text.size();
     };
     // "v2 and v3 were slowing": a coordinated subject shares its predicate.
-    static const regex kCoordinated(R"(^v[1-9]\s*(?:,\s*(?:and\s+)?|and\s+)$)");
+    static const regex kCoordinated(R"(^v[1-9]\s*(?:,\s*an?\s+[^,;]{1,60})?\s*(?:,\s*(?:and\s+)?|and\s+)$)");
     for (size_t k = 0; k < starts.size(); ++k) {
       if (k > 0 && starts[k - 1].vehicle == starts[k].vehicle) continue;
       size_t from = starts[k].pos, end = end_of(k);
@@ -1047,6 +1053,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kOppositeDir(R"(\b(?:opposite direction|proceeding opposite|oncoming|opposing direction)\b)");
   std::vector<MovementEvidence> narrative(r.vehicles.size() + 1), statement(r.vehicles.size() + 1);
   std::vector<int> relation(r.vehicles.size() + 1, 0);  // +1 same direction as the other, -1 opposite
+  std::vector<std::optional<Compass>> late_travel(r.vehicles.size() + 1);
   for (const Segment& seg : segments) {
     if (seg.vehicle < 1 || seg.vehicle > static_cast<int>(r.vehicles.size())) continue;
     const size_t vi = static_cast<size_t>(seg.vehicle);
@@ -1073,8 +1080,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const bool state_in_relative = !pre_impact && (Has(seg.text, kRelativeState) || Has(seg.text, kIntroduction));
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
-      if (!v.travel.known() && (kind == Kind::kNarrative || pre_impact)) {
+      // After the impact a direction is where the vehicle went ("continued
+      // into the southbound lane"); only one told with a travel verb is its
+      // course, and only when nothing else gives one (below).
+      static const regex kTravelling(
+          R"(\b(?:travel\w*|heading|headed|driving|proceeding|going|was|were)\s+(?:\w+\s+){0,2}?(?:north|south|east|west)\w*)");
+      if (!v.travel.known() && pre_impact) {
         if (const auto d = DirectionIn(seg.text)) v.travel.Set(*d, Provenance::kStated);
+      } else if (!late_travel[vi] && kind == Kind::kNarrative && Has(seg.text, kTravelling)) {
+        late_travel[vi] = DirectionIn(seg.text);
       }
       if (relation[vi] == 0 && pre_impact) {
         if (Has(seg.text, kOppositeDir)) relation[vi] = -1;
@@ -1125,8 +1139,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       break;
     }
   }
-  // Directions stated relative to the other vehicle.
-  if (r.vehicles.size() >= 2) {
+  // Directions stated relative to the other vehicle; then those told only
+  // after the impact, and the relative ones again.
+  auto relative_directions = [&] {
+    if (r.vehicles.size() < 2) return;
     for (size_t i = 1; i <= 2; ++i) {
       VehicleRecord& v = r.vehicles[i - 1];
       const VehicleRecord& o = r.vehicles[2 - i];
@@ -1135,7 +1151,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         v.travel.Set(relation[i] > 0 ? c : static_cast<Compass>((static_cast<int>(c) + 2) % 4), Provenance::kInferred);
       }
     }
+  };
+  relative_directions();
+  for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    if (!r.vehicles[i].travel.known() && late_travel[i + 1]) r.vehicles[i].travel.Set(*late_travel[i + 1], Provenance::kStated);
   }
+  relative_directions();
   // "v1 failed to slow for stopped traffic, striking v2, which was pushed
   // into v3": the vehicles it ran into were that traffic.
   {
@@ -1203,7 +1224,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
     static const regex kTotal(
-        R"(\b(\d)[- ]lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
+        R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
     static const regex kOneWayHere(R"(\boneway\b)");
     std::vector<RoadStatement> roads;
     for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1219,7 +1240,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // two lanes each way"), else after it ("a 4-lane road running
         // north-south"); the next road's ("..., and a northbound one-way")
         // is not this one's.
-        rs.axis = AxisIn(s.text.substr(from, pos - from + static_cast<size_t>(m.length(0))));
+        // A road's phrase starts after the previous road's (", and a ..."),
+        // however far back ("the north/south roadway, which formed the south
+        // leg of the intersection, was a 2-lane ...").
+        static const regex kNextRoad(R"(\band\s+(?:a|an|the)\s+)");
+        size_t start = 0;
+        const string upto = s.text.substr(0, pos);
+        for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kNextRoad); it != std::sregex_iterator(); ++it) {
+          start = static_cast<size_t>(it->position());
+        }
+        rs.axis = AxisIn(s.text.substr(start, pos - start + static_cast<size_t>(m.length(0))));
         if (!rs.axis) rs.axis = AxisIn(around);
         // One-way belongs to this road only when no other road phrase
         // (", and a ...") sits between the count and the word.
@@ -1338,6 +1368,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       static const regex kOneWaySentence(R"(\boneway\b)");
       static const regex kOtherRoadPhrase(R"(\b2[- ]way\b|\band (?:a|an)\b)");
+      // "... occurred on a one-way northbound street. the street had 3
+      // northbound travel lanes": the same road, told in two sentences.
+      for (size_t k = best->sentence > 0 ? best->sentence - 1 : 0; k <= best->sentence && v1_way == 0 && !one_way; ++k) {
+        const string& t = sentences[k].text;
+        if (Has(t, kOneWaySentence) && !Has(t, kOtherRoadPhrase) && !Has(scene, kTwoWay)) one_way = true;
+      }
       if (!one_way && v1_way == 0 && Has(sentences[best->sentence].text, kOneWaySentence) &&
           !Has(sentences[best->sentence].text, kOtherRoadPhrase)) {
         one_way = true;
@@ -1723,9 +1759,21 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   });
 
   // ---- Crash type: coded critical-event wording, then geometry and movements.
+  // The coded events of the first harmful event's pair: in a chain of
+  // crashes another vehicle's ("other vehicle stopped" for the third car)
+  // is a later event's. A coded sentence naming no vehicle ("her critical
+  // precrash event was ...") is about the vehicle the text is on.
   string coded;
-  for (const Sentence& s : sentences) {
-    if (s.kind == Kind::kCoding) coded += s.text;
+  {
+    static const regex kSubjectFirst(R"(^(?:the\s+(?:driver|operator|rider)\s+of\s+)?v([1-9])\b)");
+    int on = 0;
+    for (const Sentence& s : sentences) {
+      smatch m;
+      if (std::regex_search(s.text, m, kSubjectFirst)) on = std::stoi(m[1].str());
+      else if (s.kind == Kind::kCoding && !s.refs.empty()) on = s.refs.front().vehicle;
+      const bool pair = r.vehicles.size() <= 2 || on == 0 || on == striker || on == struck || striker == 0;
+      if (s.kind == Kind::kCoding && pair) coded += s.text;
+    }
   }
   const VehicleRecord* a = striker > 0 && striker <= static_cast<int>(r.vehicles.size()) ? &r.vehicles[static_cast<size_t>(striker - 1)] : nullptr;
   const VehicleRecord* b = struck > 0 && struck <= static_cast<int>(r.vehicles.size()) ? &r.vehicles[static_cast<size_t>(struck - 1)] : nullptr;
@@ -1784,7 +1832,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       const size_t ti = static_cast<size_t>(turner->id[1] - '0');
       for (const Segment& seg : segments) {
         if (seg.vehicle == static_cast<int>(ti) && seg.sentence <= impact && sentences[seg.sentence].kind != Kind::kCoding &&
-            (Has(seg.text, kFromSide) || (!other_oncoming && Has(seg.text, kOnto)))) {
+            (Has(seg.text, kFromSide) || (!other_oncoming && !same && Has(seg.text, kOnto)))) {
           turner_from_side = true;
         }
       }
@@ -1914,8 +1962,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
     static const regex kIntersectionWord(R"(\bintersection\b)");
+    static const regex kMidblock(R"(\bmid-?block\b|\bnon-?junction\b|\bnot (?:at|in|near) (?:an|the) (?:intersection|junction)\b)");
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
+    } else if (Has(pre, kMidblock) && !Has(pre, kDriveway)) {
+      r.crash.location.Set(CrashLocation::kSegment, Provenance::kStated);
     } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {

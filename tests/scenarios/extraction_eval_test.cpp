@@ -47,6 +47,16 @@ TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
                    {"collision_location", 0.97}, {"driving_actions", 0.93}, {"crash_type", 0.97}});
 }
 
+// Invented reports in the NMVCCS researchers' own style, labelled in NASS
+// terms without reading the rules (docs/extraction.md gives its first look).
+TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
+  const ExtractionScore s =
+      EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/nmvccs_style", NarrativeExtractor{});
+  EXPECT_EQ(s.n, 45);
+  ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+                   {"collision_location", 0.97}, {"driving_actions", 0.86}, {"crash_type", 0.95}});
+}
+
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {
   const std::string dir = ::testing::TempDir() + "/eval_mapping";
   std::filesystem::create_directories(dir);

@@ -918,5 +918,108 @@ TEST(NarrativeExtractorTest, TheVehicleAsASubjectIsTheOneNamedBeforeIt) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
 }
 
+TEST(NarrativeExtractorTest, CoordinatedSubjectsWithTheirDescriptions) {
+  const auto r = kExtractor.Extract(
+      "Vehicle #1, a 1990 Cadillac DeVille, was traveling westbound. Vehicle #2, a 2003 Volkswagen Passat, and "
+      "Vehicle #3, a 1999 Mazda 626, were legally parked and unoccupied along the north curb. Vehicle #1 drifted into "
+      "the parking lane, where its front struck the back of Vehicle #2.");
+  ASSERT_EQ(r.vehicles.size(), 3U);
+  EXPECT_TRUE(r.vehicles[1].parked.value);
+  EXPECT_TRUE(r.vehicles[2].parked.value);
+  // NASS codes striking a parked vehicle as a single-driver crash.
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+  const auto queue = kExtractor.Extract(
+      "Vehicle #3, a 2006 Hyundai Accent, and Vehicle #2, a 2002 Chevrolet Suburban, were stopped in the queue. The "
+      "front of Vehicle #1 struck the back of Vehicle #2.");
+  EXPECT_EQ(queue.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(queue.vehicles[2].movement.value, Movement::kStopped);
+}
+
+TEST(NarrativeExtractorTest, QueueWordsPassingAndMovingOff) {
+  const auto pass = kExtractor.Extract(
+      "V1 was westbound behind a slow truck. The driver of V1 pulled into the eastbound lane to pass the truck. V2 "
+      "was eastbound. The front of V1 struck the front of V2.");
+  EXPECT_EQ(pass.vehicles[0].movement.value, Movement::kPassing);
+  const auto line = kExtractor.Extract(
+      "V3 was first in line and V2 was stopped behind it. V1 came over the rise and its driver was not able to stop in "
+      "time. The front of V1 struck the back of V2.");
+  EXPECT_EQ(line.vehicles[2].movement.value, Movement::kStopped);
+  EXPECT_EQ(line.vehicles[0].movement.value, Movement::kStraight);
+  const auto moving = kExtractor.Extract(
+      "V1 was eastbound, stopped for a red signal. When the signal turned green, V1 began moving forward into the "
+      "intersection. V2 was southbound and did not stop for the red signal. The front of V2 struck the left side of "
+      "V1.");
+  EXPECT_EQ(moving.vehicles[0].movement.value, Movement::kStraight);
+  // A witness waiting at a bus stop is not the vehicle the text was about.
+  const auto witness = kExtractor.Extract(
+      "V1 was southbound and entered the intersection against a red signal. V2 was eastbound. The front of V2 struck "
+      "the right side of V1. He said the light was yellow. A witness waiting at a bus stop stated the signal was red.");
+  EXPECT_EQ(witness.vehicles[0].movement.value, Movement::kStraight);
+  // What a driver did not realize another vehicle did is about that vehicle.
+  const auto realize = kExtractor.Extract(
+      "V2 was northbound and had stopped for pedestrians. V1 was northbound behind V2. The front of V1 struck the back "
+      "of V2. The driver of V1 stated she did not realize V2 had stopped.");
+  EXPECT_EQ(realize.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(realize.vehicles[1].movement.value, Movement::kStopped);
+}
+
+TEST(NarrativeExtractorTest, TravelLanesOneWayInTheSentenceBeforeAndRoadAxes) {
+  const auto travel = kExtractor.Extract(
+      "The north/south street had four travel lanes, two in each direction. V1 was northbound behind V2. The front of "
+      "V1 struck the back of V2.");
+  EXPECT_EQ(travel.road.lanes_total.value, 4);
+  const auto one_way = kExtractor.Extract(
+      "This crash occurred on a one-way northbound street. The street had three northbound travel lanes. V1 was "
+      "northbound in lane three behind V2. The front of V1 struck the back of V2.");
+  EXPECT_TRUE(one_way.road.one_way.value);
+  EXPECT_EQ(one_way.road.lanes_total.value, 3);
+  const auto legs = kExtractor.Extract(
+      "The crash occurred at a three-leg intersection. The east/west roadway was a four-lane road with two lanes in "
+      "each direction. The north/south roadway, which formed the south leg of the intersection, was a two-lane, "
+      "two-way road. V1 was northbound on the south leg and stopped for the stop sign. V2 was eastbound. The front of "
+      "V2 struck the left side of V1.");
+  EXPECT_EQ(legs.road.lanes_total.value, 2);
+}
+
+TEST(NarrativeExtractorTest, MidblockAndTheNextIntersectionAreNotTheJunction) {
+  const auto mid = kExtractor.Extract(
+      "V1 was eastbound in lane two. V2 was eastbound in lane one. The crash occurred at a midblock location. The "
+      "driver of V1 changed lanes to the right to turn at the next intersection, and the right side of V1 struck the "
+      "left side of V2.");
+  EXPECT_EQ(mid.crash.location.value, CrashLocation::kSegment);
+  const auto next = kExtractor.Extract(
+      "V1 was eastbound in lane two. V2 was eastbound in lane one. V1 moved right to prepare for a right turn at the "
+      "next intersection, and the right side of V1 struck the left side of V2.");
+  EXPECT_EQ(next.crash.location.value, CrashLocation::kSegment);
+}
+
+TEST(NarrativeExtractorTest, DirectionsAfterTheImpactAndTheFirstPairsCoding) {
+  // Where V1 went after the impact is not its course; "following" it is.
+  const auto after = kExtractor.Extract(
+      "V2 was northbound and was slowing to turn right into a gas station driveway. V1 was following it. The front of "
+      "V1 struck the back of V2. V1 continued into the southbound lane.");
+  EXPECT_EQ(after.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(after.crash.type.value, CrashType::kRearEnd);
+  // A later pair's coding ("other vehicle stopped" for the third car) does not type the first harmful event.
+  const auto chain = kExtractor.Extract(
+      "V1 was northbound. V2 was southbound, followed by V3. V1 drifted across the centerline, and its front struck "
+      "the front of V2. The front of V3 struck the back of V2. The critical precrash event for V1 was this vehicle "
+      "traveling over the lane line on the left side of travel lane. The driver of V3 was not injured. His critical "
+      "precrash event was other vehicle stopped in lane ahead.");
+  EXPECT_EQ(chain.crash.type.value, CrashType::kHeadOn);
+}
+
+TEST(NarrativeExtractorTest, TurnsOffTheRoadAcrossAVehicleGoingTheSameWay) {
+  const auto onto = kExtractor.Extract(
+      "V1 and V2 were northbound on a two-lane highway. V2 moved into the southbound lane to pass V1. V1 began to turn "
+      "left onto a gravel road, and the front of V2 struck the left side of V1.");
+  EXPECT_EQ(onto.crash.type.value, CrashType::kTurnAcrossPath);
+  const auto drive = kExtractor.Extract(
+      "V1 and V2 were traveling north. V2 was ahead of V1. V2 attempted to cross over into a driveway on the west "
+      "side of the roadway. V1 struck V2 in the left side with its front.");
+  EXPECT_EQ(drive.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(drive.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 }  // namespace
 }  // namespace accsim
