@@ -98,7 +98,11 @@ void AddExtractCommands(CLI::App& app) {
     for (const auto& [g, n] : s.group_sizes) std::printf(" %10s", g.c_str());
     std::printf("\n");
     for (const auto& a : ExtractionAttributes()) {
-      std::printf("%-20s %8.2f%% %7d", a.c_str(), 100.0 * s.attributes.at(a), s.scored.at(a));
+      if (s.scored.at(a) == 0) {
+        std::printf("%-20s %9s %7d", a.c_str(), "n/a", 0);  // no case codes it
+      } else {
+        std::printf("%-20s %8.2f%% %7d", a.c_str(), 100.0 * s.attributes.at(a), s.scored.at(a));
+      }
       for (const auto& [g, n] : s.group_sizes) std::printf(" %9.2f%%", 100.0 * s.by_group.at(g).at(a));
       std::printf("\n");
     }

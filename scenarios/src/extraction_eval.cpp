@@ -426,7 +426,7 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
     score.scored[a] = n;
     score.attributes[a] = n ? hits[a] / n : 0.0;
   }
-  score.extra["impact_areas"] = area_scored ? area_hits / area_scored : 0.0;
+  if (area_scored) score.extra["impact_areas"] = area_hits / area_scored;  // absent when no event codes areas
   for (const auto& [g, h] : group_hits) {
     for (const auto& a : ExtractionAttributes()) {
       const int n = group_scored[g].count(a) ? group_scored[g][a] : 0;
