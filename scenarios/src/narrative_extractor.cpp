@@ -166,6 +166,7 @@ Numbered NameUnnumberedVehicles(const string& s) {
   // names it (a list of vehicles names a noun each: "a car, a van and ...").
   static const regex kNamedAppositive(R"(\b(?:a|an)\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*$)");
   static const regex kFirstPerson(R"(\b(?:i|me)\b(?!-))");
+  static const regex kMy(R"(\bmy\b)");
   Numbered out{s, {}};
   std::map<string, int> owner;  // head noun -> vehicle, 0 when two share it
   int next = 1;
@@ -175,11 +176,13 @@ Numbered NameUnnumberedVehicles(const string& s) {
     owner[head_of(m[2].str())] = 1;
     out.descriptions[1] = m[1].str();
     out.text = std::regex_replace(std::regex_replace(out.text, kMine, "v1"), kFirstPerson, "v1");
+    out.text = std::regex_replace(out.text, kMy, "v1's");  // "hit my passenger side", "into my lane"
     next = 2;
   } else if (static const regex kQuoted(R"("[^"]{0,400}")"); Has(std::regex_replace(out.text, kQuoted, " "), kFirstPerson)) {
     // A narrator known only as "i" / "me" drives v1; a quoted "i" is someone
     // else speaking ("'i saw it coming,' a witness said").
     out.text = std::regex_replace(out.text, kFirstPerson, "v1");
+    out.text = std::regex_replace(out.text, kMy, "v1's");
     next = 2;
   }
   string rebuilt;
@@ -548,7 +551,11 @@ void ReadMovement(const string& t, MovementEvidence& e) {
     if (Has(turns, kRight)) e.intent_right = true;
   }
   if (Has(t, kEntered)) e.entered = true;
-  if (Has(t, kLaneChange)) e.lane_change = true;
+  // "in the lane to v1's right ... moved into v1's lane": from beside it,
+  // not across the centre line.
+  static const regex kIntoTheirLane(R"(\binto\s+v[1-9]'?s\s+lane\b)");
+  static const regex kBeside(R"(\blane to (?:the|v[1-9]'?s|his|her|its|their) (?:left|right)\b|\b(?:adjacent|next) lane\b)");
+  if (Has(t, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   if (Has(t, kMerge)) e.merge = true;
   if (Has(t, kBack)) e.back = true;
   if (Has(t, kPass)) e.pass = true;
@@ -849,7 +856,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // "could not avoid striking v1" foretells the impact; the sentence that
       // tells it comes next.
       static const regex kAvoided(
-          R"(\b(?:avoid\w*|prevent\w*|without)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b)");
+          R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b)");
       if (!Has(std::regex_replace(s.text, kAvoided, " "), kContact)) continue;
       std::set<int> distinct;
       for (const Ref& ref : s.refs) distinct.insert(ref.vehicle);

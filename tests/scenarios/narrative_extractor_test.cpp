@@ -1021,5 +1021,23 @@ TEST(NarrativeExtractorTest, TurnsOffTheRoadAcrossAVehicleGoingTheSameWay) {
   EXPECT_EQ(drive.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, TheNarratorsPossessionsAndWithoutSignalling) {
+  const auto r = kExtractor.Extract(
+      "I was driving west in the middle lane. A white Ford Explorer in the lane to my right suddenly moved into my "
+      "lane without signalling and hit my passenger side.");
+  ASSERT_EQ(r.vehicles.size(), 2U);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
+  // Across the centre line into the narrator's lane is not a lane change.
+  const auto across = kExtractor.Extract(
+      "I was driving north. A pickup coming the other way crossed the center line into my lane and hit my car "
+      "head-on.");
+  EXPECT_NE(across.vehicles[1].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(across.crash.type.value, CrashType::kHeadOn);
+}
+
 }  // namespace
 }  // namespace accsim
