@@ -1414,8 +1414,20 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kDivided(
         R"(\bdual carriageway\b|\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
     static const regex kUndivided(R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b)");
+    // At a junction, a divided road running across V1's course is the other
+    // road ("the through roadway ran east/west and was a divided highway").
+    const bool at_junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
+    bool divided = false;
+    for (const Sentence& s : sentences) {
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !Has(s.text, kDivided)) continue;
+      const std::optional<int> axis = AxisIn(s.text);
+      if (at_junction && v1_axis >= 0 && axis && *axis != v1_axis) continue;
+      static const regex kRest(R"(\b(?:came to (?:its |their )?(?:final )?rest|final rest|rest(?:ed|ing)? against)\b)");
+      if (Has(s.text, kRest)) continue;  // "came to rest against the median curb"
+      divided = true;
+    }
     if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);
-    else if (Has(scene, kDivided)) r.road.divided.Set(true, Provenance::kStated);
+    else if (divided) r.road.divided.Set(true, Provenance::kStated);
 
     // V1 leaving a driveway or parking lot was on it: NASS counts its lanes,
     // a two-way drive of one lane each way unless the report counts them.

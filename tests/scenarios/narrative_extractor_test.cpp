@@ -1039,5 +1039,21 @@ TEST(NarrativeExtractorTest, TheNarratorsPossessionsAndWithoutSignalling) {
   EXPECT_EQ(across.crash.type.value, CrashType::kHeadOn);
 }
 
+TEST(NarrativeExtractorTest, TheOtherRoadsMedianDoesNotDivideV1sRoad) {
+  const auto r = kExtractor.Extract(
+      "V1 was southbound on a three-lane, two-way collector street that formed the north leg of a signalized "
+      "T-intersection. The through roadway ran east/west and was a divided highway with three lanes in each "
+      "direction separated by a raised median. V2 was westbound in the middle lane. V1 turned left and the front of "
+      "V2 struck the left side of V1. V1 came to rest against the median curb.");
+  EXPECT_FALSE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_total.value, 3);
+  // V1 on the divided road: divided.
+  const auto on = kExtractor.Extract(
+      "V1 was westbound on the through roadway, which ran east/west and was a divided highway with three lanes in "
+      "each direction. V2 was southbound at the T-intersection. V2 turned left and the front of V1 struck the left "
+      "side of V2.");
+  EXPECT_TRUE(on.road.divided.value);
+}
+
 }  // namespace
 }  // namespace accsim
