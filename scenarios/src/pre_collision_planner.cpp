@@ -19,6 +19,7 @@ constexpr double kStraightLength = 600.0;  // [m] straight map, x in [-300, 300]
 constexpr double kArmLength = 220.0;       // [m] junction arms
 constexpr double kFaceTolerance = 0.35;    // [m] a contact this close to a face touches it
 constexpr double kFollowGap = 30.0;        // [m] vehicles outside the impact follow the striker this far back
+constexpr double kQueueGap = 1.5;          // [m] between stopped vehicles queued ahead of a rear-end's struck vehicle
 
 std::string Fmt(const char* f, double a) {
   char b[64];
@@ -261,13 +262,24 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
     c.start_speed[static_cast<size_t>(b)] = std::min(c.start_speed[static_cast<size_t>(b)], std::max(sb, 0.0));
     if (vb.movement.value != Manoeuvre::kSlowing) c.start_speed[static_cast<size_t>(b)] = sb;
   }
-  // Vehicles outside the reconstructed impact follow the striker.
+  // Vehicles outside the reconstructed impact: in a rear-end, those
+  // stopped wait in the queue ahead of the struck vehicle (the chain it is
+  // pushed into); the others follow the striker, each a gap further back.
+  int following = 0;
   for (int i = 0; i < n; ++i) {
     if (i == a || i == b) continue;
+    const auto& vi = d.vehicles[static_cast<size_t>(i)];
+    if (c.type == CrashType::kRearEnd && vi.movement.value == Manoeuvre::kStopped) {
+      c.start_speed[static_cast<size_t>(i)] = 0.0;
+      c.impact_speed[static_cast<size_t>(i)] = 0.0;
+      note(vi.id + ": not in the reconstructed impact; stopped in the queue ahead of " + vb.id);
+      continue;
+    }
+    ++following;
     c.start_speed[static_cast<size_t>(i)] = c.start_speed[static_cast<size_t>(a)];
     c.impact_speed[static_cast<size_t>(i)] = sa;
-    note(d.vehicles[static_cast<size_t>(i)].id + ": not in the reconstructed impact; follows " + va.id + " " +
-         Fmt("%.0f m", kFollowGap) + " back");
+    note(vi.id + ": not in the reconstructed impact; follows " + va.id + " " + Fmt("%.0f m", following * kFollowGap) +
+         " back");
   }
   return c;
 }
@@ -640,14 +652,25 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
     LaneCombination k;
     k.map = spec;
     k.paths.resize(d.vehicles.size());
+    // Others as ResolveImpact placed them: stopped ones queued ahead of the
+    // struck vehicle, bumper to bumper 1.5 m apart; moving ones behind the
+    // striker, a follow gap each.
+    int following = 0;
+    double queue_front = pb.impact_s + HalfLength(cb);
     for (size_t i = 0; i < d.vehicles.size(); ++i) {
       if (static_cast<int>(i) == c.striker) {
         k.paths[i] = pa;
       } else if (static_cast<int>(i) == c.struck) {
         k.paths[i] = pb;
+      } else if (c.start_speed[i] == 0.0 && c.impact_speed[i] == 0.0 && type == CrashType::kRearEnd) {
+        const double hl = HalfLength(d.vehicles[i].vehicle_class.value);
+        k.paths[i] = pb;
+        k.paths[i].impact_s = queue_front + kQueueGap + hl;
+        k.paths[i].lanes = "queued ahead of " + B.id;
+        queue_front = k.paths[i].impact_s + hl;
       } else {
         k.paths[i] = pa;
-        k.paths[i].impact_s -= kFollowGap;
+        k.paths[i].impact_s -= ++following * kFollowGap;
         k.paths[i].lanes = "following " + A.id;
       }
     }

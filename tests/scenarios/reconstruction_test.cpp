@@ -278,5 +278,37 @@ TEST(ReconstructionSweepTest, StatedConfigurationsReconstructAtTheirStatedSpeeds
   EXPECT_GT(honoured, noted);
 }
 
+TEST(ReconstructionTest, ChainCrashesQueueTheStoppedAndSpaceTheFollowers) {
+  // A rear-end into a queue of three stopped vehicles: they wait ahead of the
+  // struck one, and the striker's front meets the struck vehicle's back first.
+  auto queue = Two(CrashType::kRearEnd, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kRear,
+                   Manoeuvre::kStraight, Manoeuvre::kStopped);
+  for (const char* id : {"V3", "V4"}) {
+    queue.vehicles.push_back({});
+    queue.vehicles.back().id = id;
+    queue.vehicles.back().movement.Set(Manoeuvre::kStopped, Provenance::kStated);
+  }
+  const Reconstruction q = Reconstruct(queue);
+  EXPECT_TRUE(q.check.success) << q.check.reason;
+  const double struck_x = q.plan.trajectories[1].Sample(0.0).x;
+  for (size_t i : {2u, 3u}) {
+    EXPECT_NEAR(q.plan.trajectories[i].Sample(0.0).v, 0.0, 1e-12);
+    EXPECT_GT(q.plan.trajectories[i].Sample(0.0).x, struck_x);  // ahead of the struck vehicle (eastbound)
+  }
+  EXPECT_GT(q.plan.trajectories[3].Sample(0.0).x, q.plan.trajectories[2].Sample(0.0).x);
+  // Two moving vehicles outside a head-on follow the striker a gap apart each,
+  // not in one place.
+  auto head_on = Two(CrashType::kHeadOn, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kFront,
+                     Manoeuvre::kStraight, Manoeuvre::kStraight);
+  for (const char* id : {"V3", "V4"}) {
+    head_on.vehicles.push_back({});
+    head_on.vehicles.back().id = id;
+  }
+  const Reconstruction h = Reconstruct(head_on);
+  EXPECT_TRUE(h.check.success) << h.check.reason;
+  const auto p3 = h.plan.trajectories[2].Sample(0.0), p4 = h.plan.trajectories[3].Sample(0.0);
+  EXPECT_GT(std::hypot(p3.x - p4.x, p3.y - p4.y), 10.0);
+}
+
 }  // namespace
 }  // namespace accsim
