@@ -1146,6 +1146,20 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       break;
     }
   }
+  // Inverted: "southbound on the same road were v2, followed by v3, and then
+  // v4": every vehicle named after the verb.
+  {
+    static const regex kInverted(R"(^(?:also\s+)?(north|south|east|west)bound\b[^.]{0,60}?\b(?:was|were)\s+(?=v[1-9]\b))");
+    for (const Sentence& s : sentences) {
+      smatch m;
+      if (s.kind != Kind::kNarrative || !std::regex_search(s.text, m, kInverted)) continue;
+      for (const Ref& ref : s.refs) {
+        if (ref.pos < static_cast<size_t>(m.length(0)) || ref.vehicle > static_cast<int>(r.vehicles.size())) continue;
+        VehicleRecord& v = r.vehicles[static_cast<size_t>(ref.vehicle - 1)];
+        if (!v.travel.known()) v.travel.Set(CompassWord(m[1].str()), Provenance::kStated);
+      }
+    }
+  }
   // Directions stated relative to the other vehicle; then those told only
   // after the impact, and the relative ones again.
   auto relative_directions = [&] {

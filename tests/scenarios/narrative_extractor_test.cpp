@@ -1055,5 +1055,15 @@ TEST(NarrativeExtractorTest, TheOtherRoadsMedianDoesNotDivideV1sRoad) {
   EXPECT_TRUE(on.road.divided.value);
 }
 
+TEST(NarrativeExtractorTest, AnInvertedSentenceGivesItsVehiclesTheDirection) {
+  const auto r = kExtractor.Extract(
+      "V1 was northbound on a two-lane highway. Southbound on the same road were V2, followed by V3, and then V4. V1 "
+      "drifted across the centerline and its front struck the front of V2.");
+  ASSERT_EQ(r.vehicles.size(), 4U);
+  for (size_t i = 1; i < 4; ++i) EXPECT_EQ(r.vehicles[i].travel.value, Compass::kSouth) << i;
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+}
+
 }  // namespace
 }  // namespace accsim
