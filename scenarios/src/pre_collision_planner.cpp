@@ -211,7 +211,8 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
 
   // Speeds at the impact: stated, else drawn (seeded) from documented
   // distributions: U(0.8, 1.0) x the limit on the approach, half that when
-  // slowing, U(4, 7) m/s through a turn; zero when stopped.
+  // slowing, U(4, 7) m/s through a turn, U(1.5, 3) m/s backing; zero when
+  // stopped.
   const double limit = d.road.speed_limit.value;
   const bool junction = JunctionType(c.type);
   c.start_speed.assign(static_cast<size_t>(n), 0.0);
@@ -227,6 +228,8 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
     } else {
       if (Turning(m)) {
         s = std::uniform_real_distribution<double>(4.0, 7.0)(rng);
+      } else if (m == Manoeuvre::kBacking) {
+        s = std::uniform_real_distribution<double>(1.5, 3.0)(rng);  // reversing out of a drive
       } else {
         s = limit * std::uniform_real_distribution<double>(0.8, 1.0)(rng);
         if (m == Manoeuvre::kSlowing) s *= 0.5;
@@ -249,7 +252,11 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
   auto& sa = c.impact_speed[static_cast<size_t>(a)];
   auto& sb = c.impact_speed[static_cast<size_t>(b)];
   // Same-direction crashes need the striker to close on the struck vehicle.
-  const double closing = c.type == CrashType::kRearEnd ? 3.0 : c.type == CrashType::kSideswipeSame ? 2.0 : -1.0;
+  // (Not a striker backing out across the road: it meets the other's side.)
+  const double closing = va.movement.value == Manoeuvre::kBacking       ? -1.0
+                         : c.type == CrashType::kRearEnd        ? 3.0
+                         : c.type == CrashType::kSideswipeSame  ? 2.0
+                                                                : -1.0;
   if (closing > 0.0 && sa < sb + closing) {
     if (!vb.speed.known() && sa > closing) {
       sb = sa - closing;
@@ -489,7 +496,13 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
   spec.surface = d.road.surface.value;
   // A median only matters for same-direction crashes on a straight road; a
   // head-on across it, or a junction, is planned undivided.
-  const bool junction = JunctionType(type);
+  // A striker backing with its back into the other is planned on a straight
+  // road whatever the type (the drive it leaves is not a mapped leg).
+  const bool backs_in = A.movement.value == Manoeuvre::kBacking &&
+                        (c.striker_area == ImpactArea::kRear || c.striker_area == ImpactArea::kRearLeft ||
+                         c.striker_area == ImpactArea::kRearRight) &&
+                        !c.obstacle;
+  const bool junction = JunctionType(type) && !backs_in;
   spec.divided = d.road.divided.value && (type == CrashType::kRearEnd || type == CrashType::kSideswipeSame);
   if (junction) {
     spec.type = d.road.type.value == RoadType::kIntersection ? RoadType::kIntersection : RoadType::kTJunction;
@@ -535,6 +548,25 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
     pa = swap_turner ? pk : pc;
     pb = swap_turner ? pc : pk;
   };
+  // A striker backing into the other with its back: out of a drive beside
+  // the road, across it, into the side of a vehicle eastbound in its lane
+  // (the kerb lane for a right side, the lane by the centre line for a left
+  // side, reached across the westbound lanes). The backer is planned in
+  // reverse: its path runs rear first.
+  if (backs_in) {
+    if (variant != 0) throw std::invalid_argument("plan: one backing geometry only");
+    const bool left = HasLeft(c.struck_area);
+    const int lane = left ? 0 : kerb;
+    const double y_lane = LaneY(map, Compass::kEast, lane);
+    const double side = left ? 1.0 : -1.0;  // where the drive is: the struck face points there
+    const double edge = spec.lanes_per_direction * w + 30.0;
+    pb = road_lane(Compass::kEast, lane);
+    pb.impact_s = pb.path.Project(Vec2(0.0, y_lane)).s;
+    pa = VehiclePath{Polyline({Vec2(0.0, side * edge), Vec2(0.0, -side * edge)}), 0.0,
+                     std::string("backing out of a drive on the ") + (left ? "north" : "south") + " side", false, true};
+    pa.reverse = true;
+    pa.impact_s = pa.path.Project(Vec2(0.0, y_lane + side * (HalfWidth(cb) + HalfLength(ca)))).s;
+  } else
   switch (type) {
     case CrashType::kRearEnd: {
       const int lane = B.lane.value ? std::min(*B.lane.value, kerb) : A.lane.value ? std::min(*A.lane.value, kerb) : 0;
@@ -890,7 +922,9 @@ PlannedCrash TimeParameterise(const ImpactConfiguration& c, const LaneCombinatio
     for (int j = 0; j * config.dt <= horizon + 1e-9; ++j) {
       const double t = j * config.dt, s = s0 + prof.S(t);
       const Vec2 q = vp.path.PointAt(s);
-      pts.push_back({t, q.x(), q.y(), HeadingNear(vp.path, s), prof.V(t)});
+      // A vehicle backing along its path faces against it and moves at -v.
+      pts.push_back({t, q.x(), q.y(), WrapAngle(HeadingNear(vp.path, s) + (vp.reverse ? kPi : 0.0)),
+                     vp.reverse ? -prof.V(t) : prof.V(t)});
       if (t <= T) {
         if (!vp.off_road && !map.OnRoad(q)) {
           throw std::invalid_argument("plan: " + v.id + " leaves the drivable area at " + Fmt("%.2f s", t));

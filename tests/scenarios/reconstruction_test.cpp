@@ -310,5 +310,27 @@ TEST(ReconstructionTest, ChainCrashesQueueTheStoppedAndSpaceTheFollowers) {
   EXPECT_GT(std::hypot(p3.x - p4.x, p3.y - p4.y), 10.0);
 }
 
+TEST(ReconstructionTest, AStrikerBackingOutOfADriveMeetsTheSideWithItsBack) {
+  for (const ImpactArea side : {ImpactArea::kLeft, ImpactArea::kRight}) {
+    for (const CrashType type : {CrashType::kAngle, CrashType::kSideswipeSame, CrashType::kUnknown}) {
+      auto d = Two(type, RoadType::kStraight, ImpactArea::kRear, side, Manoeuvre::kBacking, Manoeuvre::kStraight);
+      if (type == CrashType::kUnknown) d.type = {};
+      const Reconstruction r = Reconstruct(d);
+      EXPECT_TRUE(r.check.success) << ToString(type) << " " << ToString(side) << ": " << r.check.reason;
+      // Backing: facing against its motion, at walking-to-jogging speed.
+      const TrajectoryPoint p = r.plan.trajectories[0].Sample(r.plan.state.time);
+      EXPECT_LT(p.v, 0.0);
+      EXPECT_GE(-p.v, 1.5 - 1e-9);
+      EXPECT_LE(-p.v, 3.0 + 1e-9);
+    }
+  }
+  // Into a parked car across the street.
+  auto parked = Two(CrashType::kSingleVehicle, RoadType::kStraight, ImpactArea::kRear, ImpactArea::kLeft,
+                    Manoeuvre::kBacking, Manoeuvre::kStopped);
+  parked.vehicles[1].parked = true;
+  const Reconstruction p = Reconstruct(parked);
+  EXPECT_TRUE(p.check.success) << p.check.reason;
+}
+
 }  // namespace
 }  // namespace accsim

@@ -73,6 +73,7 @@ struct VehiclePath {
   std::string lanes;     // what the path follows, for reports ("north inbound 0 -> left connector")
   bool leaves_lane = false;  // part of the path is an OMPL Dubins curve off the lane centrelines
   bool off_road = false;     // a roadside departure or object: not held to the drivable area
+  bool reverse = false;      // driven rear first (backing): heading against the path, speed negative
 };
 struct LaneCombination {
   RoadMapSpec map;
