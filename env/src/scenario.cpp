@@ -122,7 +122,7 @@ Trajectory TrajectoryFromJson(const nlohmann::json& j, const std::string& path) 
     p.x = f.Number("x", -1e5, 1e5);
     p.y = f.Number("y", -1e5, 1e5);
     p.yaw = f.Number("yaw", -2 * kPi, 2 * kPi);
-    p.v = f.Number("v", 0.0, 100.0);
+    p.v = f.Number("v", -30.0, 100.0);  // negative: reversing (a vehicle backing out of a drive)
     f.RejectUnknown();
     pts.push_back(p);
   }

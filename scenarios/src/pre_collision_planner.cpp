@@ -510,7 +510,9 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
   } else {
     spec.type = RoadType::kStraight;
     spec.length = kStraightLength;
-    if (type == CrashType::kSideswipeSame) spec.lanes_per_direction = std::max(2, spec.lanes_per_direction);
+    if (type == CrashType::kSideswipeSame && !backs_in) {
+      spec.lanes_per_direction = std::max(2, spec.lanes_per_direction);
+    }
   }
   const RoadMap map(spec);
   const double w = spec.lane_width;

@@ -71,6 +71,9 @@ TEST(ScenarioTest, WrongTypesAndValuesAreNamed) {
   j["npcs"][0]["reference"][2]["x"] = nullptr;
   EXPECT_EQ(ErrorOf(j), "npcs[0].reference[2].x: expected a number, got null");
   j = ExampleJson();
+  j["npcs"][0]["reference"][2]["v"] = -45.0;  // reversing is negative, but not that fast
+  EXPECT_EQ(ErrorOf(j), "npcs[0].reference[2].v: must be in [-30, 100], got -45");
+  j = ExampleJson();
   j["ego"]["route"] = {{0, 0}};
   EXPECT_EQ(ErrorOf(j), "ego.route: needs at least 2 entries, got 1");
   j = ExampleJson();

@@ -322,6 +322,8 @@ TEST(ReconstructionTest, AStrikerBackingOutOfADriveMeetsTheSideWithItsBack) {
       EXPECT_LT(p.v, 0.0);
       EXPECT_GE(-p.v, 1.5 - 1e-9);
       EXPECT_LE(-p.v, 3.0 + 1e-9);
+      // The saved scenario, reversing reference and all, loads again.
+      EXPECT_NO_THROW(ScenarioFromJson(ToJson(r.plan.scenario)));
     }
   }
   // Into a parked car across the street.

@@ -13,7 +13,7 @@ struct TrajectoryPoint {
   double x = 0.0;    // [m]
   double y = 0.0;    // [m]
   double yaw = 0.0;  // [rad]
-  double v = 0.0;    // [m/s] speed along the heading
+  double v = 0.0;    // [m/s] speed along the heading (negative: reversing)
 };
 
 // Strictly increasing in time. Immutable; safe to share between threads.
