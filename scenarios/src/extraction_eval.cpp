@@ -327,9 +327,12 @@ ExtractionScore EvaluateExtraction(const std::string& dir, const ExtractFn& extr
     }
 
     // Lane count: V1's travel lanes as NASS counts them: all lanes of a
-    // one-way road, V1's direction on a divided road, both directions otherwise.
-    std::optional<int> want_lanes = FirstVehicle<int>(vehicles, "num_travel_lanes_code", LeadingInt);
-    if (!want_lanes) want_lanes = FirstVehicle<int>(vehicles, "travel_lanes", CountWord);
+    // one-way road, V1's direction on a divided road, both directions
+    // otherwise. Only V1's own code: another vehicle's is another road's
+    // (at a junction), so V1 coded unknown is not scored.
+    const nlohmann::json v1_only = nlohmann::json::array({vehicles.front()});
+    std::optional<int> want_lanes = FirstVehicle<int>(v1_only, "num_travel_lanes_code", LeadingInt);
+    if (!want_lanes) want_lanes = FirstVehicle<int>(v1_only, "travel_lanes", CountWord);
     if (want_lanes) {
       const int got_lanes = r.road.one_way.value   ? r.road.lanes_total.value
                             : r.road.divided.value ? r.road.lanes_per_direction.value

@@ -128,6 +128,20 @@ TEST(ExtractionEvalTest, VehiclesNumberedTheOtherWayArePairedByYearMakeAndModel)
   EXPECT_EQ(ScoreOne("eval_anonymous", anonymous).attributes.at("driving_actions"), 0.0);
 }
 
+TEST(ExtractionEvalTest, LaneCountIsV1sOwnCodeOnly) {
+  // V1's road is a side street nobody counted; V2's four lanes are another road's.
+  auto row = [](const char* v1_lanes) {
+    return nlohmann::json{
+        {"vehcount", "2"},
+        {"narrative", "V1 was eastbound on a side street. V2 was southbound on a four-lane road. V2 struck V1."},
+        {"vehicles",
+         {{{"veh_number", "1"}, {"num_travel_lanes_code", v1_lanes}},
+          {{"veh_number", "2"}, {"num_travel_lanes_code", "4"}}}}};
+  };
+  EXPECT_EQ(ScoreOne("eval_v1_lanes_unknown", row("Unknown")).scored.at("lane_count"), 0);
+  EXPECT_EQ(ScoreOne("eval_v1_lanes_two", row("2")).scored.at("lane_count"), 1);
+}
+
 TEST(ExtractionEvalTest, ABlankLimitIsNotScoredButNoStatutoryLimitIs) {
   auto row = [](const char* limit) {
     return nlohmann::json{{"vehcount", "2"},
