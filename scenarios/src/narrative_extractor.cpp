@@ -452,6 +452,7 @@ struct RoadStatement {
   int total = 0, per_direction = 0, directional = 0;
   bool one_way = false;
   bool cross = false;              // said of the cross street ("the cross street is a 2-lane road")
+  bool ramp = false;               // said of a ramp ("a single-lane entrance ramp")
 };
 
 std::optional<int> AxisIn(const string& s) {
@@ -703,6 +704,32 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
 }
 
 // "exiting a parking lot driveway", "at the parking lot exit".
+// A road named by its kind, with the word that tells it from the others:
+// "side street", "county road", "highway", "stem".
+const string& RoadNoun() {
+  static const string kNoun =
+      R"(((?:(?:county|state|rural|city|residential|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|route|arterial|stem|freeway|interstate|expressway)))";
+  return kNoun;
+}
+
+// The road the clause holding `pos` is about: its first named road ("the
+// side street is a 2-lane road posted at 30 mph" -> "side street").
+string ClauseRoad(const string& s, size_t pos) {
+  const size_t stop = s.find_last_of(".;:", pos == 0 ? 0 : pos - 1);
+  const size_t from = stop == string::npos ? 0 : stop + 1;
+  static const regex kFirst(R"(\b(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
+  smatch m;
+  const string clause = s.substr(from, pos - from);
+  return std::regex_search(clause, m, kFirst) ? m[1].str() : string();
+}
+
+// The road a vehicle's text puts it on ("was westbound on the side street").
+string RoadTravelledOn(const string& t) {
+  static const regex kOn(R"(\b(?:on|along|down|up|from|onto)\s+the\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
+  smatch m;
+  return std::regex_search(t, m, kOn) ? m[1].str() : string();
+}
+
 bool LeavesDriveway(const string& t) {
   static const regex kFromDriveway(
       R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b)");
@@ -1247,6 +1274,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kTotal(
         R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
     static const regex kOneWayHere(R"(\boneway\b)");
+    // Roads named with their axis ("a north/south rural highway and an
+    // east/west county road") give it to later sentences about them ("the
+    // county road is a 2-lane road").
+    static const string kRoadNoun = R"((?:county |state |rural |city |residential |through |collector |main |frontage )?(?:road|roadway|street|highway|avenue|boulevard|route|drive|lane))";
+    static const regex kNamedAxis(
+        R"(\b(north|south|east|west)(?:/|-|\s+and\s+)(?:north|south|east|west)\s+(?:[\w-]+\s+){0,2}?)" + kRoadNoun + R"(\b)");
+    static const regex kSubjectRoad(R"(^(?:the\s+)?)" + kRoadNoun + R"(\b)");
+    std::map<string, int> axis_of_road;
+    for (const Sentence& s : sentences) {
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kNamedAxis); it != std::sregex_iterator(); ++it) {
+        const string w = (*it)[1].str(), named = it->str();
+        static const regex kTail(kRoadNoun + "$");
+        smatch nm;
+        if (std::regex_search(named, nm, kTail)) axis_of_road[nm.str()] = (w == "east" || w == "west") ? 0 : 1;
+      }
+    }
     std::vector<RoadStatement> roads;
     for (size_t i = 0; i < sentences.size(); ++i) {
       const Sentence& s = sentences[i];
@@ -1272,6 +1315,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
         rs.axis = AxisIn(s.text.substr(start, pos - start + static_cast<size_t>(m.length(0))));
         if (!rs.axis) rs.axis = AxisIn(around);
+        smatch sm;
+        if (!rs.axis && std::regex_search(s.text, sm, kSubjectRoad) && axis_of_road.count(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0))) {
+          rs.axis = axis_of_road.at(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0));
+        }
         // One-way belongs to this road only when no other road phrase
         // (", and a ...") sits between the count and the word.
         const string near_before = s.text.substr(pos > 25 ? pos - 25 : 0, pos > 25 ? 25 : pos);
@@ -1284,8 +1331,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (stop != string::npos) near_after = near_after.substr(0, stop);
         rs.one_way = Has(near_before, kOneWayHere) || Has(near_after, kOneWayHere);
         static const regex kCrossStreet(
-            R"(\b(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b)");
+            R"(\b(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b|\bthe stem\b)");
         rs.cross = Has(around, kCrossStreet);
+        static const regex kRampAfter(R"(^[\w ,-]{0,30}?\bramp\b)");
+        rs.ramp = Has(s.text.substr(pos + static_cast<size_t>(m.length(0)), 40), kRampAfter);
         rs.total = total;
         rs.per_direction = per_dir;
         rs.directional = directional;
@@ -1307,6 +1356,30 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)");
         if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), kNotARoadBefore)) continue;
         add(*it, static_cast<size_t>(it->position()), std::stoi((*it)[1].str()), 0, 0);
+      }
+      // "1 northbound lane, 1 southbound lane and a northbound left-turn
+      // lane": the road's lanes, listed; their sum is its total (after the
+      // other statements: a stated total comes first).
+      {
+        static const regex kListed(
+            R"(\b(\d|a|an)\s+(?:(?:north|south|east|west)bound\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|through\s+|travel\s+)?|(?:center|centre|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?)lanes?\b)");
+        static const regex kJoin(R"(^\s*(?:,\s*(?:and\s+)?|and\s+))");
+        int sum = 0, items = 0;
+        size_t first = 0, last_end = 0;
+        smatch lm;
+        for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kListed); it != std::sregex_iterator(); ++it) {
+          const size_t pos = static_cast<size_t>(it->position());
+          if (items > 0 && !Has(s.text.substr(last_end, pos - last_end), kJoin)) {
+            if (items >= 2) break;
+            sum = 0, items = 0;
+          }
+          if (items == 0) first = pos, lm = *it;
+          const string n = (*it)[1].str();
+          sum += std::isdigit(static_cast<unsigned char>(n[0])) ? n[0] - '0' : 1;
+          ++items;
+          last_end = pos + static_cast<size_t>(it->length());
+        }
+        if (items >= 2) add(lm, first, sum, 0, 0);
       }
     }
     std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) { return a.sentence < b.sentence; });
@@ -1337,8 +1410,18 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (seg.vehicle > 1 && !seg.perceived && Has(seg.text, kOnOneWay)) v1_way = -1;
       }
     }
+    // V1 on a ramp the report counts the lanes of ("entering the freeway
+    // from the ramp").
+    static const regex kOnRamp(R"(\b(?:on|from|along|down|up|entering|exiting|via)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
+    bool v1_on_ramp = false;
+    for (const Segment& seg : segments) {
+      if (seg.vehicle == 1 && !seg.perceived && sentences[seg.sentence].kind != Kind::kCoding && Has(seg.text, kOnRamp)) {
+        v1_on_ramp = true;
+      }
+    }
     const RoadStatement* best = nullptr;
-    if (v1_way != 0) best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.one_way == (v1_way > 0); });
+    if (v1_on_ramp) best = pick([](const RoadStatement& rs) { return rs.ramp && rs.owner <= 1; });
+    if (!best && v1_way != 0) best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.one_way == (v1_way > 0); });
     if (!best && v1_way > 0) {
       // On a one-way road whose lanes the report does not count: one lane.
       r.road.one_way.Set(true, Provenance::kStated);
@@ -1376,9 +1459,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // Combine statements about the same road (a total in one sentence, the
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
-      bool one_way = best->one_way;
+      bool one_way = best->one_way || best->ramp;  // a ramp carries one direction
       for (const auto& rs : roads) {
-        if (&rs == best || rs.owner > 1 || rs.one_way != best->one_way ||
+        if (&rs == best || rs.owner > 1 || rs.one_way != best->one_way || rs.ramp != best->ramp ||
             (rs.axis && best->axis && rs.axis != best->axis)) {
           continue;
         }
@@ -1427,7 +1510,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // freeway counts when the crash is on it, not "a nearby interstate".
     static const regex kDivided(
         R"(\bdual carriageway\b|\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
-    static const regex kUndivided(R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b)");
+    static const regex kUndivided(
+        R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b|\b(?:no|without (?:a|any)) (?:\w+ )?median\b)");
     // At a junction, a divided road running across V1's course is the other
     // road ("the through roadway ran east/west and was a divided highway").
     const bool at_junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
@@ -1515,6 +1599,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       int owner;
       std::optional<int> axis;
       size_t order;
+      string road;  // the road its clause is about ("the side street is ..., posted at 30 mph")
     };
     std::vector<Limit> limits;
     static const regex kValue(R"(\b(\d{2,3})\s*(kmh|mph)\b)");
@@ -1550,13 +1635,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const double value = std::stod((*it)[1].str());
         if (value < 5 || value > 180) continue;
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
-                          AxisIn(before), order++});
+                          AxisIn(before), order++, ClauseRoad(s.text, pos)});
         found = true;
       }
       smatch m;
       if (!found && std::regex_search(s.text, m, kBare)) {
         limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, static_cast<size_t>(m.position())),
-                          AxisIn(s.text.substr(0, static_cast<size_t>(m.position()))), order++});
+                          AxisIn(s.text.substr(0, static_cast<size_t>(m.position()))), order++,
+                          ClauseRoad(s.text, static_cast<size_t>(m.position()))});
       }
     }
     // No limit word anywhere: a value that describes the road itself ("a
@@ -1580,7 +1666,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const bool kmh = m[2].str() == "kmh";
         if (value < 5 || value > 180) continue;
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
-                          AxisIn(s.text.substr(0, pos)), order++});
+                          AxisIn(s.text.substr(0, pos)), order++, ClauseRoad(s.text, pos)});
         break;
       }
     }
@@ -1589,6 +1675,23 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (l.owner == 1) {
         pick = &l;
         break;
+      }
+    }
+    // The limit of the road V1 is said to be on ("v1 was westbound on the
+    // side street").
+    string v1_road;
+    for (const Segment& seg : segments) {
+      if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
+      if (!(v1_road = RoadTravelledOn(seg.text)).empty()) break;
+    }
+    // ("the road", "the street" name no road in particular.)
+    const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
+    if (!pick && distinctive) {
+      for (const auto& l : limits) {
+        if (l.owner <= 1 && l.road == v1_road) {
+          pick = &l;
+          break;
+        }
       }
     }
     if (!pick && v1_axis >= 0) {

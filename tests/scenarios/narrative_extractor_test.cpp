@@ -1065,5 +1065,49 @@ TEST(NarrativeExtractorTest, AnInvertedSentenceGivesItsVehiclesTheDirection) {
   EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
 }
 
+TEST(NarrativeExtractorTest, TwoRoadJunctionsTellV1sRoadByItsName) {
+  // "no median" is undivided; the county road's lanes and limit are V1's.
+  const auto county = kExtractor.Extract(
+      "This crash occurred at the four-leg intersection of a north/south rural highway and an east/west county road. "
+      "The highway has four travel lanes, two in each direction, with no median, and a posted speed limit of 55 mph. "
+      "The county road is a two-lane, two-way road posted at 35 mph. V1 was eastbound on the county road and turned "
+      "left. V2 was southbound on the highway. The front of V2 struck the left side of V1.");
+  EXPECT_FALSE(county.road.divided.value);
+  EXPECT_EQ(county.road.lanes_total.value, 2);
+  EXPECT_NEAR(county.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+  // The stem is the cross street; its limit is the one said of the side street V1 is on.
+  const auto stem = kExtractor.Extract(
+      "The through road runs east/west and has four lanes, two in each direction, posted 40 MPH. The stem is a "
+      "two-lane, two-way street entering from the south. The side street is posted at 25 MPH. V1 was northbound on "
+      "the side street and turned left. V2 was eastbound. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(stem.road.lanes_total.value, 2);
+  EXPECT_NEAR(stem.road.speed_limit_mps.value, 25 * 0.44704, 1e-6);
+  // "The road" is no road in particular: the axis decides.
+  const auto generic = kExtractor.Extract(
+      "The north/south road is a two-lane highway posted 55 MPH. The east/west road is a two-lane road posted 45 "
+      "MPH. V1 was eastbound on the east/west road. V2 was northbound. The front of V1 struck the left side of V2.");
+  EXPECT_NEAR(generic.road.speed_limit_mps.value, 45 * 0.44704, 1e-6);
+}
+
+TEST(NarrativeExtractorTest, ListedLanesAndRampLanes) {
+  const auto listed = kExtractor.Extract(
+      "V1 was northbound approaching a four-leg intersection. At the intersection the roadway had one northbound "
+      "lane, one southbound lane and a northbound left-turn lane. V1 turned left. V2 was southbound. The front of V2 "
+      "struck the right side of V1.");
+  EXPECT_EQ(listed.road.lanes_total.value, 3);
+  // A stated total stands: the centre lane is among the five.
+  const auto five = kExtractor.Extract(
+      "The arterial is a five-lane roadway with two northbound lanes, two southbound lanes, and a center two-way "
+      "left-turn lane. V1 was southbound and turned left. V2 was northbound. The front of V2 struck the right side of "
+      "V1.");
+  EXPECT_EQ(five.road.lanes_total.value, 5);
+  const auto ramp = kExtractor.Extract(
+      "The crash occurred where a single-lane entrance ramp joins the eastbound lanes of a freeway. The freeway has "
+      "three eastbound lanes. V1 was entering the freeway from the ramp. V2 was eastbound in lane one. The left side "
+      "of V1 contacted the right side of V2.");
+  EXPECT_EQ(ramp.road.lanes_total.value, 1);
+  EXPECT_TRUE(ramp.road.one_way.value);
+}
+
 }  // namespace
 }  // namespace accsim
