@@ -1,6 +1,8 @@
 #include "accsim/scenarios/narrative_extractor.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -480,6 +482,7 @@ struct MovementEvidence {
   bool coded_lane_change = false, other_says_stopped = false;
   bool rolled_stop = false, no_stop = false;
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
+  bool u_turn = false;
   bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
@@ -490,13 +493,13 @@ struct MovementEvidence {
 // Reads one piece of text about a vehicle for movement statements.
 void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kStopState(
-      R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\bcame to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
+      R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(
       R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
   static const regex kNoStop(
-      R"(\b(?:failed to|did not|didn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+)?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
+      R"(\b(?:failed to|did not|didn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
       R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
@@ -507,22 +510,23 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kIntention(
       R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn))");
   static const regex kLaneChange(
-      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|steered|swerved|veered|drifted|merged|pulled|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
       R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
   static const regex kPass(
-      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,5}?to (?:pass|overtake)\b)");
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
-      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due)\b)");
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
-  // parked thing is what the vehicle struck, not the vehicle itself.
+  // parked thing is what the vehicle struck, not the vehicle itself; nor is
+  // one it saw ("could see past the parked truck").
   static const regex kParkedObject(
-      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)\b[^,.;]*)");
+      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+\s+)?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b)");
   const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);
   if (parked && !Has(t, kLeavingParking)) e.parked = true;
   if (Has(t, kLeavingParking)) e.leaving_parking = true;
@@ -541,7 +545,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kEntered(
       R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b)");
   // A lane's name is not a manoeuvre: "in the two-way left turn lane".
-  static const regex kTurnLane(R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b)");
+  static const regex kTurnLane(
+      R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b|\b(?:left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b)");
   const string turns = std::regex_replace(t, kTurnLane, " lane ");
   const bool intention = Has(turns, kIntention);
   if (!intention) {
@@ -565,6 +570,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kStarted(
       R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b)");
   if (Has(t, kStarted)) e.started = true;
+  static const regex kUTurn(R"(\bu-?\s?turn)");
+  if (!intention && Has(t, kUTurn)) e.u_turn = true;
 }
 
 // NHTSA critical-event wording ("this vehicle traveling, turning left at
@@ -625,9 +632,12 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     d.pre_event = d.manoeuvre;
     const bool stopped = n.stopped || n.stop_cancelled || st.stopped || st.stop_cancelled;
     // "did not stop before making the turn": slowed for it.
-    if (n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop) d.pre_event = Movement::kSlowing;
-    else if (stopped) d.pre_event = Movement::kStopped;
-    else if (n.slowing) d.pre_event = Movement::kSlowing;
+    const bool rolled = n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop;
+    if (stopped && !rolled) d.pre_event = Movement::kStopped;
+    // A U-turn is its own pre-event movement (NASS "making a U-turn").
+    else if (n.u_turn || st.u_turn) d.pre_event = Movement::kTurnLeft;
+    else if (rolled) d.pre_event = Movement::kSlowing;
+    else if (n.slowing || st.slowing) d.pre_event = Movement::kSlowing;
     // When the turn is itself the critical event ("this vehicle turning left
     // at intersection"), what the vehicle did before it was driving on.
     else if (n.coded_turn_left || n.coded_turn_right) d.pre_event = Movement::kStraight;
@@ -837,7 +847,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         string model;
         for (size_t k = 1; k < words.size(); ++k) model += (model.empty() ? "" : " ") + words[k];
         owners[model].insert(v);
-        owners[words.back()].insert(v);
+        // Every word after the make: "the sonoma" for "a gmc sonoma pickup".
+        for (size_t k = 1; k < words.size(); ++k) owners[words[k]].insert(v);
       }
       static const std::array<const char*, 7> kClassWord = {"car", "suv", "pickup", "van", "truck", "bus", "motorcycle"};
       owners[kClassWord[static_cast<size_t>(ClassOf(d + " " + (bodies.count(v) ? bodies[v] : "")))]].insert(v);
@@ -850,7 +861,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!aliases.empty()) {
       string alt;
       for (const auto& [alias, v] : aliases) alt += (alt.empty() ? "" : "|") + EscapeRegex(alias);
-      const regex alias_re(R"(\bthe\s+(?:(?:19|20)\d\d\s+)?()" + alt + R"()\b(?!\s+(?:driver|was driven)))");
+      // "the stopped jetta", "the oncoming ford": a state word may come first.
+      const regex alias_re(
+          R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|first|second)\s+)?()" +
+          alt + R"()\b(?!\s+(?:driver|was driven)))");
       std::map<string, int> lookup(aliases.begin(), aliases.end());
       for (Sentence& s : sentences) {
         s.text = ReplaceWith(s.text, alias_re, [&](const smatch& m) { return "v" + std::to_string(lookup[m[1].str()]); });
@@ -991,7 +1005,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|traffic|emergency vehicle)\b|\btraffic\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|vans?|buses|bus|traffic|emergency vehicle)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1025,6 +1039,25 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
     }
     std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.pos < b.pos; });
+    // "v1 struck the back of v2 while it was slowing": a pronoun clause after
+    // an object is about the object.
+    static const regex kObjectsClause(R"(\b(?:while|as|when)\s+(?:it|he|she)\s+(?:was|had)\b)");
+    std::vector<Start> objects;
+    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kObjectsClause); it != std::sregex_iterator(); ++it) {
+      const size_t pos = static_cast<size_t>(it->position());
+      int last = 0, subject = 0;
+      for (const Ref& ref : s.refs) {
+        if (ref.pos < pos) last = ref.vehicle;
+      }
+      for (const Start& st : starts) {
+        if (st.pos < pos) subject = st.vehicle;
+      }
+      if (last > 0 && subject > 0 && last != subject) objects.push_back({pos, last, false});
+    }
+    if (!objects.empty()) {
+      starts.insert(starts.end(), objects.begin(), objects.end());
+      std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.pos < b.pos; });
+    }
     // Text before the first start belongs to the sentence's focus (pronoun sentences, "as he stopped, ...").
     const size_t first = starts.empty() ? s.text.size() : starts.front().pos;
     // A segment that starts at a vehicle reference skips it; a continuation
@@ -1073,10 +1106,26 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         from = starts[q].pos;
         end = end_of(q);
       }
-      segments.push_back({starts[k].vehicle, i, cut(from, end), starts[k].perceived});
+      string seg_text = cut(from, end);
+      // What the observer only believed of it ("saw v2 coming but thought it
+      // was slowing") is not what it did.
+      static const regex kBelief(R"(\b(?:thought|believed|assumed|expected|figured)\b)");
+      smatch bm;
+      if (starts[k].perceived && std::regex_search(seg_text, bm, kBelief)) {
+        seg_text = seg_text.substr(0, static_cast<size_t>(bm.position()));
+      }
+      segments.push_back({starts[k].vehicle, i, seg_text, starts[k].perceived});
     }
   }
 
+  // ACCSIM_DEBUG_SEGMENTS=1 lists each vehicle's text on stderr (vehicle,
+  // sentence, kind, impact sentence): what the movement rules read.
+  if (std::getenv("ACCSIM_DEBUG_SEGMENTS")) {
+    for (const auto& sg : segments) {
+      std::fprintf(stderr, "[v%d s%zu k%d imp%zu%s] %s\n", sg.vehicle, sg.sentence,
+                   static_cast<int>(sentences[sg.sentence].kind), impact, sg.perceived ? " seen" : "", sg.text.c_str());
+    }
+  }
   // ---- Directions, lanes, speeds, movements per vehicle.
   static const regex kLaneNo(
       R"(\b(?:in|within|using|from|occupying)\s+(?:the\s+)?(?:lane\s+([1-9])\b|([1-9])(?:st|nd|rd|th)\s+(?:\w+\s+){0,2}?lane))");
@@ -2098,15 +2147,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
     static const regex kIntersectionWord(R"(\bintersection\b)");
+    // (A named drive beside a midblock crash places it; "missed the entrance
+    // to a restaurant" does not.)
+    static const regex kDrivewayWord(R"(\bdriveway\b|\balley\b|\bparking lot\b)");
+    // A crash on a ramp leading to an intersection is on the ramp.
+    static const regex kOnTheRamp(R"(\b(?:on|onto|along|of|in)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
     static const regex kMidblock(R"(\bmid-?block\b|\bnon-?junction\b|\bnot (?:at|in|near) (?:an|the) (?:intersection|junction)\b)");
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
-    } else if (Has(pre, kMidblock) && !Has(pre, kDriveway)) {
+    } else if (Has(pre, kMidblock) && !Has(pre, kDrivewayWord)) {
       r.crash.location.Set(CrashLocation::kSegment, Provenance::kStated);
     } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
+    } else if (Has(pre, kOnTheRamp)) {
+      r.crash.location.Set(CrashLocation::kRamp, Provenance::kInferred);
     } else if (r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kRamp)) {

@@ -58,6 +58,15 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
                    {"collision_location", 0.97}, {"driving_actions", 0.86}, {"crash_type", 0.95}});
 }
 
+// A second NMVCCS-style set by another hand, first read after the first set's fixes.
+TEST(ExtractionEvalTest, ReadsASecondSetOfNewReportsInTheNmvccsStyle) {
+  const ExtractionScore s =
+      EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/nmvccs_style_b", NarrativeExtractor{});
+  EXPECT_EQ(s.n, 40);
+  ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
+                   {"collision_location", 0.97}, {"driving_actions", 0.95}, {"crash_type", 0.97}});
+}
+
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {
   const std::string dir = ::testing::TempDir() + "/eval_mapping";
   std::filesystem::create_directories(dir);

@@ -1109,5 +1109,70 @@ TEST(NarrativeExtractorTest, ListedLanesAndRampLanes) {
   EXPECT_TRUE(ramp.road.one_way.value);
 }
 
+TEST(NarrativeExtractorTest, StopsSlowingsAndUTurnsInOtherWords) {
+  const auto brought = kExtractor.Extract(
+      "V1 was northbound and its driver intended to turn left. The driver brought V1 to a complete stop to wait for a "
+      "gap. V2 was southbound. V1 started its turn, and the front of V2 struck the right side of V1.");
+  EXPECT_EQ(brought.vehicles[0].pre_event.value, Movement::kStopped);
+  const auto never = kExtractor.Extract(
+      "V1 was southbound. The driver of V1 slowed as she approached but never came to a stop, and began a left turn. "
+      "V2 was northbound. The front of V2 struck the right side of V1.");
+  EXPECT_EQ(never.vehicles[0].pre_event.value, Movement::kSlowing);
+  const auto coasted = kExtractor.Extract(
+      "V2 had run out of fuel and coasted to a stop in the right lane. V1 was northbound behind it. The front of V1 "
+      "struck the back of V2.");
+  EXPECT_EQ(coasted.vehicles[1].movement.value, Movement::kStopped);
+  const auto slowed_to = kExtractor.Extract(
+      "V1 was eastbound and its driver intended to turn left. He slowed to about 20 km/h with his left turn signal "
+      "on. V2 was passing. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(slowed_to.vehicles[0].pre_event.value, Movement::kSlowing);
+  // A turn signal is not a turn.
+  const auto signal = kExtractor.Extract(
+      "V1 was eastbound with its right turn signal on and began slowing. V2 was eastbound behind V1. The front of V2 "
+      "struck the back of V1.");
+  EXPECT_EQ(signal.vehicles[0].movement.value, Movement::kSlowing);
+  const auto u_turn = kExtractor.Extract(
+      "V1 was eastbound in the right lane. Without stopping, she steered left to make a U-turn. V2 was eastbound in "
+      "the left lane. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(u_turn.vehicles[0].pre_event.value, Movement::kTurnLeft);
+}
+
+TEST(NarrativeExtractorTest, WhoAClauseIsAbout) {
+  // "while it was slowing" after the object is the object's.
+  const auto object = kExtractor.Extract(
+      "V1 and V2 were northbound. V2 braked for a yellow signal. V1, which had been following closely, struck the "
+      "back of V2 while it was slowing.");
+  EXPECT_EQ(object.vehicles[1].movement.value, Movement::kSlowing);
+  EXPECT_EQ(object.vehicles[0].movement.value, Movement::kStraight);
+  // Every word of a model names it; "the stopped jetta" is the Jetta.
+  const auto sonoma = kExtractor.Extract(
+      "V1, a 1997 GMC Sonoma pickup, was eastbound. V2, a 2004 Dodge Neon, was passing the Sonoma when the Sonoma "
+      "began its left turn. The front of V2 struck the left side of the stopped Sonoma.");
+  EXPECT_EQ(sonoma.vehicles[1].movement.value, Movement::kPassing);
+  EXPECT_EQ(sonoma.crash.struck.value, "V1");
+  // What an observer only believed is not what the other did; a parked van it saw is not it.
+  const auto belief = kExtractor.Extract(
+      "V1 was stopped, waiting to turn left. V2 was southbound. She stated that she saw V2 coming but thought it was "
+      "slowing to turn. A delivery van parked along the curb limited the view. The front of V2 struck the right side "
+      "of V1.");
+  EXPECT_EQ(belief.vehicles[1].movement.value, Movement::kStraight);
+  EXPECT_FALSE(belief.vehicles[1].parked.value);
+  const auto between = kExtractor.Extract(
+      "V1 was backing out of a driveway. V2 was eastbound. The back of V1 struck the left side of V2. He said V1 shot "
+      "out between 2 parked cars.");
+  EXPECT_EQ(between.vehicles[0].movement.value, Movement::kBacking);
+}
+
+TEST(NarrativeExtractorTest, RampsAndMidblockPlaceTheCrash) {
+  const auto ramp = kExtractor.Extract(
+      "This crash occurred on a two-lane exit ramp leading to a signalized intersection. V2 was in the left lane of "
+      "the ramp, moving slowly with the queue. V1 came onto the ramp behind V2, and its front struck the back of V2.");
+  EXPECT_EQ(ramp.crash.location.value, CrashLocation::kRamp);
+  const auto missed = kExtractor.Extract(
+      "The crash occurred mid-block. V1 had missed the entrance to a restaurant and made a U-turn. V2 was eastbound. "
+      "The front of V2 struck the left side of V1.");
+  EXPECT_EQ(missed.crash.location.value, CrashLocation::kSegment);
+}
+
 }  // namespace
 }  // namespace accsim
