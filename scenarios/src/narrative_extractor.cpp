@@ -1167,10 +1167,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // into the southbound lane"); only one told with a travel verb is its
       // course, and only when nothing else gives one (below).
       static const regex kTravelling(
-          R"(\b(?:travel\w*|heading|headed|driving|proceeding|going|was|were)\s+(?:\w+\s+){0,2}?(?:north|south|east|west)\w*)");
+          R"(\b(?:travel\w*|heading|headed|driving|proceeding|going)\s+(?:\w+\s+){0,2}?(?:north|south|east|west)\w*)");
+      static const regex kAtRest(R"(\b(?:rest|facing|came to)\b)");  // where it ended up, not its course
       if (!v.travel.known() && pre_impact) {
         if (const auto d = DirectionIn(seg.text)) v.travel.Set(*d, Provenance::kStated);
-      } else if (!late_travel[vi] && kind == Kind::kNarrative && Has(seg.text, kTravelling)) {
+      } else if (!late_travel[vi] && kind == Kind::kNarrative && Has(seg.text, kTravelling) && !Has(seg.text, kAtRest)) {
         late_travel[vi] = DirectionIn(seg.text);
       }
       if (relation[vi] == 0 && pre_impact) {

@@ -1174,5 +1174,14 @@ TEST(NarrativeExtractorTest, RampsAndMidblockPlaceTheCrash) {
   EXPECT_EQ(missed.crash.location.value, CrashLocation::kSegment);
 }
 
+TEST(NarrativeExtractorTest, WhereAVehicleCameToRestIsNotItsCourse) {
+  const auto r = kExtractor.Extract(
+      "V1 was stopped at the signal intending to turn left. V2 was eastbound in the right lane. V1 started turning "
+      "left when the front of V2 struck the left side of V1. V1 rotated and its final rest was facing east in the "
+      "eastbound lane.");
+  EXPECT_NE(r.vehicles[0].travel.value, std::optional<Compass>(Compass::kEast));
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
+}
+
 }  // namespace
 }  // namespace accsim
