@@ -646,9 +646,15 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // A stop before the critical event is the pre-crash movement even when a
   // turn was intended afterwards (how NASS codes it).
   if (e.stopped && !e.started) return both(Movement::kStopped, Provenance::kStated);
-  if (e.lane_change || n.coded_lane_change) return both(Movement::kChangingLanes, Provenance::kStated);
+  // A lane change or a pass that is itself the vehicle's coded critical
+  // event ("this vehicle traveling over the lane line") was preceded by
+  // driving on: NASS codes that as the pre-event movement, as for turns.
+  auto own_event = [&](Movement m) {
+    return n.coded_straight ? MovementDecision{m, Movement::kStraight, Provenance::kStated} : both(m, Provenance::kStated);
+  };
+  if (e.lane_change || n.coded_lane_change) return own_event(Movement::kChangingLanes);
   if (e.merge) return both(Movement::kMerging, Provenance::kStated);
-  if (e.pass) return both(Movement::kPassing, Provenance::kStated);
+  if (e.pass) return own_event(Movement::kPassing);
   if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
   if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
   if (e.straight || n.coded_straight || e.stop_cancelled || e.started) return both(Movement::kStraight, Provenance::kStated);

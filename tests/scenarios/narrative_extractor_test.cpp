@@ -1183,5 +1183,20 @@ TEST(NarrativeExtractorTest, WhereAVehicleCameToRestIsNotItsCourse) {
   EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
 }
 
+TEST(NarrativeExtractorTest, ALaneChangeThatIsTheCodedCriticalEventFollowedDrivingOn) {
+  const char* kCrash =
+      "V1 was eastbound in the center lane. V2 was eastbound in the left lane. V1 changed lanes to the left and its "
+      "left side struck the right side of V2.";
+  const auto plain = kExtractor.Extract(kCrash);
+  EXPECT_EQ(plain.vehicles[0].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(plain.vehicles[0].pre_event.value, Movement::kChangingLanes);
+  const auto coded = kExtractor.Extract(std::string(kCrash) +
+                                        " The Critical Precrash Event for V1 was this vehicle traveling over the lane "
+                                        "line on the left side of travel lane.");
+  EXPECT_EQ(coded.vehicles[0].movement.value, Movement::kChangingLanes);  // the path into the crash
+  EXPECT_EQ(coded.vehicles[0].pre_event.value, Movement::kStraight);       // what NASS codes before it
+  EXPECT_EQ(coded.crash.type.value, CrashType::kSideswipeSame);
+}
+
 }  // namespace
 }  // namespace accsim
