@@ -275,7 +275,7 @@ Kind KindOf(const string& s) {
   static const regex kPeople(
       R"(injur|transported|year[- ]old|years old|\b\d+ year\b|medication|lenses|glasses|eyesight|fatigue|treatment|)"
       R"(hospital|trauma|ambulance|rested|health|alcohol|drugs|\bcited\b|citation|summons|ticket|interview|airbag|air bag|)"
-      R"(seat ?belt|belted|occupant|passenger(?!'?s? (?:side|door|corner|fender|quarter))|\b(?:his|her) way\b|going home|heading home|errand|medical|license|)"
+      R"(seat ?belt|belted|occupant|passenger(?!'?s? (?:side|door|corner|fender|quarter)| (?:vehicles?|cars?))|\b(?:his|her) way\b|going home|heading home|errand|medical|license|)"
       R"(towed|driven from the scene|driven away|fled|contact lens|pregnan)");
   static const regex kStatement(
       R"(\b(?:stated|said|says|states|indicated|reported|advised|according to|recalled|estimated|told|admitted|claimed)\b)");
@@ -284,7 +284,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bthe driver,\s+an?\s+[^,;()]{0,40},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+driver\b|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -396,9 +396,15 @@ std::optional<Compass> DirectionIn(const string& s) {
   // "in its westbound lane traveling east": a lane's direction is where the
   // vehicle is, a verb of travel says where it goes; the verb wins.
   static const regex kBoundLane(R"(^\w+[- ]?bound\s+(?:travel\s+|through\s+)?lanes?\b)");
+  // "intending to turn left and travel west", "to go east": where it meant
+  // to go, not how it came.
+  static const regex kIntended(
+      R"(\b(?:intend\w*|intention|plann\w*|wanted|to turn|turn (?:left|right) and|to (?:go|travel|head|proceed))\b[^.,;]{0,30}$)");
   std::optional<Compass> lane_direction;
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kDir); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
+    const size_t at = static_cast<size_t>(m.position());
+    if (m[2].matched && Has(s.substr(at > 50 ? at - 50 : 0, at > 50 ? 50 : at) + m[0].str(), kIntended)) continue;
     for (int g = 1; g <= 3; ++g) {
       if (!m[g].matched) continue;
       const bool turn = m[0].str().rfind("turn", 0) == 0;
@@ -724,7 +730,7 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
 // "side street", "county road", "highway", "stem".
 const string& RoadNoun() {
   static const string kNoun =
-      R"(((?:(?:county|state|rural|city|residential|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|route|arterial|stem|freeway|interstate|expressway)))";
+      R"(((?:(?:county|state|rural|city|residential|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|route|arterial|collector|stem|freeway|interstate|expressway)))";
   return kNoun;
 }
 
@@ -740,7 +746,10 @@ string ClauseRoad(const string& s, size_t pos) {
 }
 
 // The road a vehicle's text puts it on ("was westbound on the side street").
-string RoadTravelledOn(const string& t) {
+string RoadTravelledOn(const string& full) {
+  static const regex kTurnWords(R"(\b(?:intend\w*|to turn|turning|turned|turn|onto)\b)");
+  smatch tw;
+  const string t = std::regex_search(full, tw, kTurnWords) ? full.substr(0, static_cast<size_t>(tw.position())) : full;
   static const regex kOn(R"(\b(?:on|along|down|up|from|onto)\s+the\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   return std::regex_search(t, m, kOn) ? m[1].str() : string();
@@ -1011,7 +1020,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|vans?|buses|bus|traffic|emergency vehicle)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1210,6 +1219,28 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       ReadCoding(seg.text, narrative[vi], other);
     }
   }
+  // "4 passenger vehicles were stopped in the right lane: v5, ..., then v4,
+  // ...": every vehicle listed after the colon is in that state.
+  {
+    static const regex kListState(
+        R"(\b(?:\d|all|the|several)\s+(?:\w+\s+)?(?:vehicles|cars)\s+were\s+(?:\w+\s+)?(stopped|stationary|waiting|queued|slowing)\b[^:]*:)");
+    // The list may run on over ";"-separated items ("; then v4, a sienna").
+    static const regex kListItem(R"(^(?:then|and|followed by)?\s*v[1-9]\b)");
+    for (size_t i = 0; i < sentences.size(); ++i) {
+      const Sentence& s = sentences[i];
+      smatch m;
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kListState)) continue;
+      auto mark = [&](const Sentence& t, size_t from) {
+        for (const Ref& ref : t.refs) {
+          if (ref.pos < from || ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
+          (m[1].str() == "slowing" ? statement[static_cast<size_t>(ref.vehicle)].slowing
+                                   : statement[static_cast<size_t>(ref.vehicle)].stopped) = true;
+        }
+      };
+      mark(s, static_cast<size_t>(m.position() + m.length()));
+      for (size_t j = i + 1; j < sentences.size() && Has(sentences[j].text, kListItem); ++j) mark(sentences[j], 0);
+    }
+  }
   // "Both vehicles were traveling north": every vehicle the text gives no
   // direction of its own.
   // So does a list of them: "v1, v2 and v3 were northbound".
@@ -1323,8 +1354,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     return owner;
   };
   {
+    // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
-        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
+        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
     static const regex kTotal(
@@ -1397,7 +1429,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         roads.push_back(rs);
       };
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kPerDir); it != std::sregex_iterator(); ++it) {
-        add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()), 0);
+        add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
       }
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
            ++it) {
@@ -1658,7 +1690,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       string road;  // the road its clause is about ("the side street is ..., posted at 30 mph")
     };
     std::vector<Limit> limits;
-    static const regex kValue(R"(\b(\d{2,3})\s*(kmh|mph)\b)");
+    static const regex kValue(R"(\b(\d{2,3})(?:\s*|-)(kmh|mph)\b)");  // "45 mph", "a 45-mph zone"
     static const regex kBare(R"(\b(?:speed limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet)))");
     static const regex kAdvisory(R"((?:advisory|suggested|recommended|warning|curve)[^.]{0,25}$)");
     size_t order = 0;
@@ -1753,6 +1785,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!pick && v1_axis >= 0) {
       for (const auto& l : limits) {
         if (l.owner <= 1 && l.axis && *l.axis == v1_axis) {
+          pick = &l;
+          break;
+        }
+      }
+    }
+    // A limit said of a road across V1's course is the other road's.
+    if (!pick && v1_axis >= 0) {
+      for (const auto& l : limits) {
+        if (l.owner <= 1 && !l.axis) {
           pick = &l;
           break;
         }

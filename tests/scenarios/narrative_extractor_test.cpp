@@ -1198,5 +1198,41 @@ TEST(NarrativeExtractorTest, ALaneChangeThatIsTheCodedCriticalEventFollowedDrivi
   EXPECT_EQ(coded.crash.type.value, CrashType::kSideswipeSame);
 }
 
+TEST(NarrativeExtractorTest, ThirdSetWordingsForLanesLimitsAndQueues) {
+  const auto bay = kExtractor.Extract(
+      "The east-west road is a divided boulevard with a raised median, two through lanes plus a left-turn bay in each "
+      "direction. V1 was westbound in the inside through lane. V2 was eastbound and turned left. The front of V1 hit "
+      "the right side of V2.");
+  EXPECT_EQ(bay.road.lanes_per_direction.value, 3);
+  const auto zone = kExtractor.Extract(
+      "V2 was traveling east on a two-lane undivided road in a 35-mph zone. V1 was traveling east behind V2 and hit "
+      "V2 in the back.");
+  EXPECT_NEAR(zone.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+  // "driven by a 17-year-old male with a provisional license" and "the 19-year-old male driver" do not make
+  // a motion sentence one about people.
+  const auto license = kExtractor.Extract(
+      "Vehicle #1, a 1998 Honda Civic driven by a 17-year-old male with a provisional license, was northbound on a "
+      "two-lane residential street posted at 25 mph and came to a complete stop at the stop sign. V2 was eastbound on "
+      "the arterial. The front of V2 struck the left rear of V1.");
+  EXPECT_NEAR(license.road.speed_limit_mps.value, 25 * 0.44704, 1e-6);
+  EXPECT_EQ(license.road.lanes_total.value, 2);
+  // Where it meant to go is not where it came from.
+  const auto meant = kExtractor.Extract(
+      "V1 was a 2003 Saturn. The 19-year-old male driver stopped at the stop sign, intending to turn left and travel "
+      "west on the arterial. V2 was eastbound. The front of V2 hit the left side of V1.");
+  EXPECT_NE(meant.vehicles[0].travel.value, std::optional<Compass>(Compass::kWest));
+  EXPECT_EQ(meant.vehicles[0].pre_event.value, Movement::kStopped);
+  // A queue listed after a colon shares its state; "passenger vehicles" are not people; a parked pickup is
+  // another road user.
+  const auto queue = kExtractor.Extract(
+      "Veh. 1 was a box truck, northbound. Four passenger vehicles were stopped in the right lane, nose to tail: Veh. "
+      "4, a Cobalt, at the front; then Veh. 3, a Sienna; then Veh. 2, a Civic at the back. The truck's front hit the "
+      "back of the Civic. A large pickup was parked on the shoulder.");
+  ASSERT_EQ(queue.vehicles.size(), 4U);
+  for (size_t i = 1; i < 4; ++i) EXPECT_EQ(queue.vehicles[i].movement.value, Movement::kStopped) << i;
+  EXPECT_EQ(queue.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_FALSE(queue.vehicles[0].parked.value);
+}
+
 }  // namespace
 }  // namespace accsim
