@@ -284,7 +284,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bthe driver,\s+an?\s+[^,;()]{0,40},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+driver\b|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\b(?:the|its|his|her) driver,\s+an?\s+[^,;()]{0,40},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+driver\b|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -368,7 +368,7 @@ VehicleClass ClassOf(const string& d) {
 // street", "halfway between 2 cross streets") is not where the crash was.
 string WithoutDistantJunctions(const string& s) {
   static const regex kDistant(
-      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b)");
+      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b|\b(?:away from|not near|nowhere near|far from)\s+(?:any|an?|the)\s+[^.;,]{0,40})");
   return std::regex_replace(s, kDistant, " ");
 }
 
@@ -1331,7 +1331,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kTJunction(
       R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
   static const regex kIntersection(
-      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway))");
+      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway)|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
   static const regex kDriveway(
       R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b|\bpetrol station\b|\bcar park\b|\bentrance (?:of|to) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot)\b)");
   static const regex kRamp(R"(\b(?:on|off|entrance|exit)?[- ]?ramp\b)");
@@ -1936,8 +1936,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kFrontToFront(R"(\bfront[- ]to[- ]front\b)");
     static const regex kFrontToRear(R"(\bfront[- ]to[- ](?:rear|back)\b)");
     if (Has(s, kHeadOnPhrase) || Has(s, kFrontToFront)) {
-      note(striker, "front");
-      note(struck, "front");
+      // "collided front to front, offset toward the driver's side": the
+      // fronts, whatever corner is named too.
+      for (const int v : {striker, struck}) {
+        if (v > 0) area_words[v].front = true;
+      }
     }
     if (Has(s, kFrontToRear)) {
       note(striker, "front");
@@ -2070,6 +2073,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
       }
     }
+    auto pulls_out_of_parking = [&](const VehicleRecord* v) {
+      const size_t k = static_cast<size_t>(std::stoi(v->id.substr(1)));
+      return k < narrative.size() && (narrative[k].leaving_parking || LeftParking(narrative[k])) && !Turning(v->movement.value);
+    };
     static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
     // Front corners count as fronts here: investigators code "the front left
     // of v2 with its front left" as a head-on.
@@ -2088,6 +2095,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       type = CrashType::kHeadOn;
     } else if (struck_plain_rear && sa.front && !opposite && !lane_change_at_impact) {
       type = CrashType::kRearEnd;
+    } else if ((pulls_out_of_parking(a) || pulls_out_of_parking(b)) && !opposite) {
+      type = CrashType::kTurnAcrossPath;  // NASS: leaving a parking position across a lane, initially the same way
     } else if (lane_change_at_impact && !opposite && !turner_from_side) {
       type = CrashType::kSideswipeSame;
     } else if (turner) {
@@ -2190,7 +2199,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     pre = WithoutDistantJunctions(pre);
     static const regex kAtIntersection(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b)");
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").

@@ -1234,5 +1234,31 @@ TEST(NarrativeExtractorTest, ThirdSetWordingsForLanesLimitsAndQueues) {
   EXPECT_FALSE(queue.vehicles[0].parked.value);
 }
 
+TEST(NarrativeExtractorTest, CrossingsFrontToFrontOffsetsAndPullingOutOfAParkingSpace) {
+  const auto crossing = kExtractor.Extract(
+      "V2 was eastbound on a two-lane road and had stopped at the stop sign where that road crosses a state route. "
+      "V1 was southbound on the state route. The front of V1 impacted the left side of V2.");
+  EXPECT_EQ(crossing.crash.location.value, CrashLocation::kJunction);
+  // A creek crossed is no junction.
+  const auto creek = kExtractor.Extract(
+      "A concrete barrier begins where the interstate crosses a creek. V1 drifted right and its front struck the end "
+      "of the barrier.");
+  EXPECT_EQ(creek.crash.location.value, CrashLocation::kSegment);
+  // "front to front, offset toward the driver's side" is head-on; "its driver, a 47-year-old female," does not
+  // make the sentence one about people.
+  const auto offset = kExtractor.Extract(
+      "V2 was northbound and drifted left across the centerline. V1 was southbound. Its driver, a 47-year-old female, "
+      "braked and steered right, but V1 and V2 collided front to front, offset toward the driver's side of each.");
+  EXPECT_EQ(offset.crash.type.value, CrashType::kHeadOn);
+  // Pulling out of a parallel parking space into a lane, midblock away from any alley: turn across path.
+  const auto parked = kExtractor.Extract(
+      "The crash happened mid-block, away from any intersection or alley. Vehicle 1 was traveling east in the right "
+      "travel lane. Vehicle 2 had been parallel parked along the right curb. Its driver pulled out of the space into "
+      "the right travel lane. The front of Vehicle 1 struck the left side of Vehicle 2.");
+  EXPECT_EQ(parked.crash.location.value, CrashLocation::kSegment);
+  EXPECT_EQ(parked.vehicles[1].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(parked.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 }  // namespace
 }  // namespace accsim
