@@ -525,7 +525,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
-      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b)");
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|began|started|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -836,6 +836,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
     }
   }
+  // "a 1996 jeep grand cherokee (v1)": the description before the number.
+  {
+    static const regex kDescBefore(R"(\b(?:a|an)\s+((?:19|20)\d\d\s+[a-z][a-z0-9 -]{1,40}?)\s*\(\s*v([1-9])\s*\))");
+    for (const Sentence& s : sentences) {
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDescBefore); it != std::sregex_iterator(); ++it) {
+        const int v = std::stoi((*it)[2].str());
+        if (!descriptions.count(v)) descriptions[v] = (*it)[1].str();
+      }
+    }
+  }
   {
     // Unique aliases: "the ford", "the taurus", "the ford taurus", "the motorcycle".
     static const std::set<string> kGeneric = {"a", "an", "the", "red", "white", "black", "blue", "green", "silver",
@@ -919,6 +929,25 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if ((pass == 0 && distinct.size() >= 2) || (pass >= 1 && !distinct.empty())) {
         impact = i;
         break;
+      }
+    }
+  }
+
+  // "Contact occurred between a jeep (v1) and a honda (v2) at ...": a
+  // summary that opens the report; the crash is told where the narrative
+  // reaches it.
+  if (impact < sentences.size()) {
+    static const regex kSummary(R"(\b(?:contact|collision|crash|impact)\s+(?:\w+\s+){0,2}?between\b)");
+    if (Has(sentences[impact].text, kSummary)) {
+      for (size_t i = impact + 1; i < sentences.size(); ++i) {
+        const Sentence& s = sentences[i];
+        if (s.kind != Kind::kNarrative || !Has(s.text, kContact)) continue;
+        std::set<int> distinct;
+        for (const Ref& ref : s.refs) distinct.insert(ref.vehicle);
+        if (distinct.size() >= 2) {
+          impact = i;
+          break;
+        }
       }
     }
   }
@@ -1020,7 +1049,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1356,7 +1385,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   {
     // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
-        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
+        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
     static const regex kTotal(

@@ -69,6 +69,15 @@ TEST(ExtractionEvalTest, ReadsASecondSetOfNewReportsInTheNmvccsStyle) {
                    {"collision_location", 0.97}, {"driving_actions", 0.95}, {"crash_type", 0.97}});
 }
 
+// A third NMVCCS-style set by a third hand, first read after the second set's fixes.
+TEST(ExtractionEvalTest, ReadsAThirdSetOfNewReportsInTheNmvccsStyle) {
+  const ExtractionScore s =
+      EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/nmvccs_style_c", NarrativeExtractor{});
+  EXPECT_EQ(s.n, 40);
+  ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.92}, {"lane_count", 0.97},
+                   {"collision_location", 0.92}, {"driving_actions", 0.90}, {"crash_type", 0.95}});
+}
+
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {
   const std::string dir = ::testing::TempDir() + "/eval_mapping";
   std::filesystem::create_directories(dir);

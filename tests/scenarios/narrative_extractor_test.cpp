@@ -1260,5 +1260,23 @@ TEST(NarrativeExtractorTest, CrossingsFrontToFrontOffsetsAndPullingOutOfAParking
   EXPECT_EQ(parked.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, ASummaryOpeningTheReportIsNotTheImpact) {
+  const auto r = kExtractor.Extract(
+      "Contact occurred between a 1996 Jeep Grand Cherokee (V1) and a 2004 Honda Accord (V2) at a signalized "
+      "intersection on a six-lane divided highway. The highway has three through lanes and a single left-turn lane in "
+      "each direction. V2 was northbound and was stopped in the left-turn lane, waiting for a gap. V1 was southbound. "
+      "The front of the Jeep impacted the right side of the Accord.");
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStopped);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 4);
+  // "the vehicles were stopped" are others; "slowed and turned" is slowing before the turn.
+  const auto others = kExtractor.Extract(
+      "V1 was northbound approaching the line of traffic. The turn bay begins north of where the vehicles were "
+      "stopped. V2 slowed and turned right. The front of V1 struck the right side of V2.");
+  EXPECT_EQ(others.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(others.vehicles[1].pre_event.value, Movement::kSlowing);
+}
+
 }  // namespace
 }  // namespace accsim
