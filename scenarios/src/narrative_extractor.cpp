@@ -2227,6 +2227,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (sentences[i].kind == Kind::kNarrative && before) pre += sentences[i].text;
     }
     pre = WithoutDistantJunctions(pre);
+    // Where a road meets or crosses another is a weaker sign than "in the
+    // intersection": a ramp "that meets a surface street at a signal" still
+    // holds a crash in its queue.
+    static const regex kAtIntersectionStrong(
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bintersection of\b)");
     static const regex kAtIntersection(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
     // A vehicle leaving a driveway or lot puts the crash at its access, even
@@ -2243,7 +2248,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
     } else if (Has(pre, kMidblock) && !Has(pre, kDrivewayWord)) {
       r.crash.location.Set(CrashLocation::kSegment, Provenance::kStated);
-    } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersection) || RanTrafficControl(pre)) {
+    } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersectionStrong) ||
+               RanTrafficControl(pre) || (Has(pre, kAtIntersection) && !Has(pre, kOnTheRamp))) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
     } else if (Has(pre, kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);

@@ -1168,6 +1168,12 @@ TEST(NarrativeExtractorTest, RampsAndMidblockPlaceTheCrash) {
       "This crash occurred on a two-lane exit ramp leading to a signalized intersection. V2 was in the left lane of "
       "the ramp, moving slowly with the queue. V1 came onto the ramp behind V2, and its front struck the back of V2.");
   EXPECT_EQ(ramp.crash.location.value, CrashLocation::kRamp);
+  // The signal where the ramp meets the street is not where the queue was hit.
+  const auto queue = kExtractor.Extract(
+      "V3 was exiting on an off-ramp that widens to two lanes as it approaches a signal where it meets a surface "
+      "street. V1 was stopped in the right lane of the ramp, and V2 was stopped behind V1. The front of V3 struck the "
+      "back of V2.");
+  EXPECT_EQ(queue.crash.location.value, CrashLocation::kRamp);
   const auto missed = kExtractor.Extract(
       "The crash occurred mid-block. V1 had missed the entrance to a restaurant and made a U-turn. V2 was eastbound. "
       "The front of V2 struck the left side of V1.");
