@@ -1161,6 +1161,12 @@ TEST(NarrativeExtractorTest, WhoAClauseIsAbout) {
       "V1 was backing out of a driveway. V2 was eastbound. The back of V1 struck the left side of V2. He said V1 shot "
       "out between 2 parked cars.");
   EXPECT_EQ(between.vehicles[0].movement.value, Movement::kBacking);
+  // "Parked cars lined the curb": others, not the vehicle coming out of the alley.
+  const auto alley = kExtractor.Extract(
+      "V2 came out of an alley. The driver stopped at the sidewalk line, then pulled out to turn right. Parked cars "
+      "lined the curb on both sides. V1 was westbound. The front of V1 hit the left side of V2.");
+  EXPECT_FALSE(alley.vehicles[1].parked.value);
+  EXPECT_EQ(alley.vehicles[1].pre_event.value, Movement::kStopped);
 }
 
 TEST(NarrativeExtractorTest, RampsAndMidblockPlaceTheCrash) {
