@@ -1386,10 +1386,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
         R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
+    // "each direction of route 30 has 2 through lanes plus a left-turn bay".
+    static const regex kEachHas(
+        R"(\beach direction\b[^.;]{0,30}?\bhas\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
     static const regex kTotal(
-        R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
+        R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
     static const regex kOneWayHere(R"(\boneway\b)");
     // Roads named with their axis ("a north/south rural highway and an
     // east/west county road") give it to later sentences about them ("the
@@ -1458,6 +1461,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         roads.push_back(rs);
       };
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kPerDir); it != std::sregex_iterator(); ++it) {
+        add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
+      }
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kEachHas); it != std::sregex_iterator(); ++it) {
         add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
       }
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
@@ -1605,8 +1611,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         r.road.lanes_total.Set(n, Provenance::kStated);
         r.road.lanes_per_direction.Set(n, Provenance::kInferred);
       } else if (per) {
+        // "2 through lanes in each direction separated by a continuous
+        // two-way left-turn lane": the centre lane is a fifth.
+        static const regex kCentreLane(
+            R"(\b(?:center|centre|continuous|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|\b2[- ]way left[- ]turn lane\b)");
+        const int centre = Has(sentences[best->sentence].text, kCentreLane) ? 1 : 0;
         r.road.lanes_per_direction.Set(per, Provenance::kStated);
-        r.road.lanes_total.Set(total ? total : 2 * per, total ? Provenance::kStated : Provenance::kInferred);
+        r.road.lanes_total.Set(total ? total : 2 * per + centre, total ? Provenance::kStated : Provenance::kInferred);
       } else if (total == 1 && Has(sentences[best->sentence].text, kTwoWay)) {
         // "a two way, one lane roadway": one lane each way.
         r.road.lanes_per_direction.Set(1, Provenance::kStated);
@@ -1634,11 +1645,21 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const bool at_junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
     bool divided = false;
     for (const Sentence& s : sentences) {
-      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !Has(s.text, kDivided)) continue;
+      // "a median crossover", "stopped in the median": the other road's median.
+      static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) ||
+          !Has(std::regex_replace(s.text, kMedianPlace, " "), kDivided)) {
+        continue;
+      }
       const std::optional<int> axis = AxisIn(s.text);
       if (at_junction && v1_axis >= 0 && axis && *axis != v1_axis) continue;
       static const regex kRest(R"(\b(?:came to (?:its |their )?(?:final )?rest|final rest|rest(?:ed|ing)? against)\b)");
       if (Has(s.text, kRest)) continue;  // "came to rest against the median curb"
+      // In a sentence about a vehicle, a median is where it went ("stopped
+      // again in the median"); the road is divided only when said so.
+      static const regex kSaysDivided(
+          R"(\bdivided\b|\bdual carriageway\b|\bwith an? (?:[\w-]+ ){0,3}median\b|\bseparated by an? (?:[\w-]+ ){0,3}median\b|\bmedian[- ]divided\b|\bmedian (?:wall|barrier|guardrail|guard rail|cable)\b|\b(?:center|centre|concrete|raised) median\b)");
+      if (!s.refs.empty() && !Has(s.text, kSaysDivided)) continue;
       divided = true;
     }
     if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);

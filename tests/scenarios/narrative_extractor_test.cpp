@@ -1290,5 +1290,31 @@ TEST(NarrativeExtractorTest, ASummaryOpeningTheReportIsNotTheImpact) {
   EXPECT_EQ(others.vehicles[1].pre_event.value, Movement::kSlowing);
 }
 
+TEST(NarrativeExtractorTest, FourthSetLaneWordings) {
+  const auto each_has = kExtractor.Extract(
+      "Vehicle one was traveling east on Route 30, a divided state highway. At the intersection each direction of "
+      "Route 30 has two through lanes plus a left-turn bay. Vehicle one turned left. Vehicle two was westbound. The "
+      "front of vehicle two struck the right side of vehicle one.");
+  EXPECT_EQ(each_has.road.lanes_per_direction.value, 3);
+  const auto centre = kExtractor.Extract(
+      "V1 was westbound on Brennan Boulevard, an urban arterial with two through lanes in each direction separated "
+      "by a continuous two-way left-turn lane. V2 was eastbound. V1 turned left and the front of V2 struck the right "
+      "side of V1.");
+  EXPECT_EQ(centre.road.lanes_total.value, 5);
+  const auto each_direction = kExtractor.Extract(
+      "Elm Street runs north-south, one lane each direction, and is posted 30 mph. V1 was northbound on Elm. V2 was "
+      "eastbound. The front of V1 struck the right side of V2.");
+  EXPECT_EQ(each_direction.road.lanes_total.value, 2);
+  // The other road's median crossover, and a median V1 waited in, do not divide V1's road; a median wall does.
+  const auto crossover = kExtractor.Extract(
+      "TR 114 is a two-lane north-south road with stop signs at both roadways of US 20, including one in the median "
+      "crossover. V1 was northbound on TR 114 and stopped again in the median. V2 was westbound. The front of V2 "
+      "struck the right side of V1.");
+  EXPECT_FALSE(crossover.road.divided.value);
+  const auto wall = kExtractor.Extract(
+      "V1 lost control and crossed two lanes before contacting V2. V1 then contacted the center median wall.");
+  EXPECT_TRUE(wall.road.divided.value);
+}
+
 }  // namespace
 }  // namespace accsim
