@@ -284,7 +284,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\b(?:the|its|his|her) driver,\s+an?\s+[^,;()]{0,40},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+driver\b|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\b(?:the|its|his|her) driver,\s+an?\s+[^,;()]{0,40},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -838,11 +838,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   }
   // "a 1996 jeep grand cherokee (v1)": the description before the number.
   {
-    static const regex kDescBefore(R"(\b(?:a|an)\s+((?:19|20)\d\d\s+[a-z][a-z0-9 -]{1,40}?)\s*\(\s*v([1-9])\s*\))");
+    // "the honda, a 2003 cr-v (v2)": the make named first.
+    static const regex kDescBefore(
+        R"((?:\bthe\s+([a-z][a-z-]+),\s+)?\b(?:a|an)\s+((?:19|20)\d\d\s+[a-z][a-z0-9 -]{1,40}?)\s*\(\s*v([1-9])\s*\))");
     for (const Sentence& s : sentences) {
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDescBefore); it != std::sregex_iterator(); ++it) {
-        const int v = std::stoi((*it)[2].str());
-        if (!descriptions.count(v)) descriptions[v] = (*it)[1].str();
+        const int v = std::stoi((*it)[3].str());
+        string d = (*it)[2].str();
+        if ((*it)[1].matched) d = d.substr(0, 5) + (*it)[1].str() + " " + d.substr(5);  // "2003 honda cr-v"
+        if (!descriptions.count(v)) descriptions[v] = d;
       }
     }
   }

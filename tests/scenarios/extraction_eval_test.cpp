@@ -78,6 +78,15 @@ TEST(ExtractionEvalTest, ReadsAThirdSetOfNewReportsInTheNmvccsStyle) {
                    {"collision_location", 0.92}, {"driving_actions", 0.90}, {"crash_type", 0.95}});
 }
 
+// A fourth NMVCCS-style set by a fourth hand, first read after the third set's fixes.
+TEST(ExtractionEvalTest, ReadsAFourthSetOfNewReportsInTheNmvccsStyle) {
+  const ExtractionScore s =
+      EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/nmvccs_style_d", NarrativeExtractor{});
+  EXPECT_EQ(s.n, 40);
+  ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.90}, {"lane_count", 0.87},
+                   {"collision_location", 0.92}, {"driving_actions", 0.77}, {"crash_type", 0.97}});
+}
+
 TEST(ExtractionEvalTest, ScoresEachLabelAsDocumented) {
   const std::string dir = ::testing::TempDir() + "/eval_mapping";
   std::filesystem::create_directories(dir);

@@ -1316,5 +1316,19 @@ TEST(NarrativeExtractorTest, FourthSetLaneWordings) {
   EXPECT_TRUE(wall.road.divided.value);
 }
 
+TEST(NarrativeExtractorTest, DriversFoldedIntoTheCrashSentenceAndMakeFirstDescriptions) {
+  const auto folded = kExtractor.Extract(
+      "Vehicle one was heading south on a green signal. Vehicle two had come to a stop for the red signal. The "
+      "17-year-old male driving vehicle two, who had three teenage passengers, pulled forward into the intersection, "
+      "and the front of vehicle two struck the right side of vehicle one.");
+  EXPECT_EQ(folded.crash.striking.value, "V2");
+  EXPECT_EQ(folded.crash.struck_area.value, DamageArea::kRight);
+  const auto make_first = kExtractor.Extract(
+      "The Volkswagen, a 2001 Jetta (V1), was westbound and stopped for the red light. The Honda, a 2003 CR-V (V2), "
+      "was northbound in the curb lane. The front of the Honda struck the left side of the Volkswagen.");
+  EXPECT_EQ(make_first.crash.striking.value, "V2");
+  EXPECT_EQ(make_first.crash.struck.value, "V1");
+}
+
 }  // namespace
 }  // namespace accsim
