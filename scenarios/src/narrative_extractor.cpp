@@ -56,6 +56,13 @@ int NumberWord(const string& w) {
 // Lower-case ASCII, one space between words; every other byte (binary,
 // UTF-8) becomes a space so the rules only ever see printable text. Vehicle
 // references and numbers get one canonical form ("v2", "45").
+// Applies a table of (pattern, replacement) pairs in order.
+template <typename Table>
+string ReplaceEach(string s, const Table& table) {
+  for (const auto& [re, to] : table) s = std::regex_replace(s, re, to);
+  return s;
+}
+
 string Normalise(std::string_view in) {
   string s;
   s.reserve(in.size());
@@ -92,7 +99,7 @@ string Normalise(std::string_view in) {
       {regex(R"(\b(?:intx|intersec)\b)"), "intersection"},
       {regex(R"(\bhwy\b)"), "highway"},
   }};
-  for (const auto& [re, to] : kAbbreviations) s = std::regex_replace(s, re, to);
+  s = ReplaceEach(s, kAbbreviations);
   // Number words: "forty-five" -> 45, "two" -> 2.
   static const regex kCompound(
       R"(\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b)");
@@ -107,7 +114,7 @@ string Normalise(std::string_view in) {
       {regex(R"(\bfourth\b)"), "4th"},
       {regex(R"(\bfifth\b)"), "5th"},
   }};
-  for (const auto& [re, to] : kOrdinals) s = std::regex_replace(s, re, to);
+  s = ReplaceEach(s, kOrdinals);
   // Vehicle references: "vehicle #1", "vehicle no. 2", "veh. 3", "v-1", "unit 2".
   // A number followed by a unit ("car 2 mph", "unit 3 lanes") is not a vehicle.
   static const string kNotAUnit = R"((?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))";
@@ -259,6 +266,13 @@ struct Sentence {
   std::vector<Ref> refs;
   int focus = 0;  // the vehicle the sentence is about: its first reference, else the previous sentence's
 };
+
+// How many different vehicles the references name.
+size_t DistinctVehicles(const std::vector<Ref>& refs) {
+  std::set<int> distinct;
+  for (const Ref& ref : refs) distinct.insert(ref.vehicle);
+  return distinct.size();
+}
 
 std::vector<Ref> RefsIn(const string& s) {
   static const regex kRef(R"(\bv([1-9])\b)");
@@ -725,7 +739,6 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
   return std::nullopt;
 }
 
-// "exiting a parking lot driveway", "at the parking lot exit".
 // A road named by its kind, with the word that tells it from the others:
 // "side street", "county road", "highway", "stem".
 const string& RoadNoun() {
@@ -755,6 +768,7 @@ string RoadTravelledOn(const string& full) {
   return std::regex_search(t, m, kOn) ? m[1].str() : string();
 }
 
+// "exiting a parking lot driveway", "at the parking lot exit".
 bool LeavesDriveway(const string& t) {
   static const regex kFromDriveway(
       R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b)");
@@ -928,9 +942,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kAvoided(
           R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b)");
       if (!Has(std::regex_replace(s.text, kAvoided, " "), kContact)) continue;
-      std::set<int> distinct;
-      for (const Ref& ref : s.refs) distinct.insert(ref.vehicle);
-      if ((pass == 0 && distinct.size() >= 2) || (pass >= 1 && !distinct.empty())) {
+      const size_t distinct = DistinctVehicles(s.refs);
+      if ((pass == 0 && distinct >= 2) || (pass >= 1 && distinct > 0)) {
         impact = i;
         break;
       }
@@ -945,10 +958,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (Has(sentences[impact].text, kSummary)) {
       for (size_t i = impact + 1; i < sentences.size(); ++i) {
         const Sentence& s = sentences[i];
-        if (s.kind != Kind::kNarrative || !Has(s.text, kContact)) continue;
-        std::set<int> distinct;
-        for (const Ref& ref : s.refs) distinct.insert(ref.vehicle);
-        if (distinct.size() >= 2) {
+        if (s.kind == Kind::kNarrative && Has(s.text, kContact) && DistinctVehicles(s.refs) >= 2) {
           impact = i;
           break;
         }
@@ -966,9 +976,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       const size_t verb_end = static_cast<size_t>(vm.position() + vm.length());
       const bool object_named = std::any_of(s.refs.begin(), s.refs.end(), [&](const Ref& ref) { return ref.pos > verb_end; });
       const Sentence& next = sentences[impact + 1];
-      std::set<int> distinct;
-      for (const Ref& ref : next.refs) distinct.insert(ref.vehicle);
-      if (!object_named && next.kind == Kind::kNarrative && distinct.size() >= 2 && Has(next.text, kContact)) ++impact;
+      if (!object_named && next.kind == Kind::kNarrative && DistinctVehicles(next.refs) >= 2 && Has(next.text, kContact)) {
+        ++impact;
+      }
     }
   }
 
@@ -983,10 +993,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     smatch vm;
     if (std::regex_search(s, vm, kContact)) {
       const string after = vm.suffix().str().substr(0, 80);
-      std::set<int> distinct;
-      for (const Ref& ref : sentences[impact].refs) distinct.insert(ref.vehicle);
       static const regex kVehicleLike(R"(\bparked\b|\bunoccupied\b|\b(?:19|20)\d\d\s+[a-z])");
-      if (distinct.size() == 1 && (Has(after, kVehicleNoun) || Has(after, kVehicleLike)) &&
+      if (DistinctVehicles(sentences[impact].refs) == 1 && (Has(after, kVehicleNoun) || Has(after, kVehicleLike)) &&
           !Has(after.substr(0, 30), kObjectNoun) &&
           max_v <= 1) {
         unnumbered_other = true;
@@ -1075,35 +1083,37 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     // "the light for v1 turned green and the vehicle started turning": "the
     // vehicle" as a subject is the vehicle named last before it.
+    // "v1 struck the back of v2 while it was slowing": a pronoun clause after
+    // an object (a vehicle other than the clause's subject) is about the
+    // object.
     static const regex kTheVehicle(R"(\bthe vehicle\b(?!'s|\s+(?:of|in|ahead|behind|that|which)\b))");
-    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTheVehicle); it != std::sregex_iterator(); ++it) {
-      const size_t pos = static_cast<size_t>(it->position());
+    static const regex kObjectsClause(R"(\b(?:while|as|when)\s+(?:it|he|she)\s+(?:was|had)\b)");
+    auto named_last_before = [&](size_t pos) {
       int last = 0;
       for (const Ref& ref : s.refs) {
         if (ref.pos < pos) last = ref.vehicle;
       }
+      return last;
+    };
+    std::vector<Start> anaphora;
+    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTheVehicle); it != std::sregex_iterator(); ++it) {
+      const size_t pos = static_cast<size_t>(it->position());
+      const int last = named_last_before(pos);
       if (last > 0 && Has(s.text.substr(pos > 40 ? pos - 40 : 0, pos > 40 ? 40 : pos), kSubjectBefore)) {
-        starts.push_back({pos, last, false});
+        anaphora.push_back({pos, last, false});
       }
     }
-    std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.pos < b.pos; });
-    // "v1 struck the back of v2 while it was slowing": a pronoun clause after
-    // an object is about the object.
-    static const regex kObjectsClause(R"(\b(?:while|as|when)\s+(?:it|he|she)\s+(?:was|had)\b)");
-    std::vector<Start> objects;
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kObjectsClause); it != std::sregex_iterator(); ++it) {
       const size_t pos = static_cast<size_t>(it->position());
-      int last = 0, subject = 0;
-      for (const Ref& ref : s.refs) {
-        if (ref.pos < pos) last = ref.vehicle;
-      }
+      const int last = named_last_before(pos);
+      int subject = 0;
       for (const Start& st : starts) {
         if (st.pos < pos) subject = st.vehicle;
       }
-      if (last > 0 && subject > 0 && last != subject) objects.push_back({pos, last, false});
+      if (last > 0 && subject > 0 && last != subject) anaphora.push_back({pos, last, false});
     }
-    if (!objects.empty()) {
-      starts.insert(starts.end(), objects.begin(), objects.end());
+    if (!anaphora.empty()) {
+      starts.insert(starts.end(), anaphora.begin(), anaphora.end());
       std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.pos < b.pos; });
     }
     // Text before the first start belongs to the sentence's focus (pronoun sentences, "as he stopped, ...").
@@ -1812,55 +1822,29 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         break;
       }
     }
-    const Limit* pick = nullptr;
-    for (const auto& l : limits) {
-      if (l.owner == 1) {
-        pick = &l;
-        break;
+    // The first limit meeting the most specific test that any meets.
+    auto first_limit = [&](auto pred) -> const Limit* {
+      for (const auto& l : limits) {
+        if (pred(l)) return &l;
       }
-    }
+      return nullptr;
+    };
     // The limit of the road V1 is said to be on ("v1 was westbound on the
-    // side street").
+    // side street"); "the road", "the street" name no road in particular.
     string v1_road;
     for (const Segment& seg : segments) {
       if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
       if (!(v1_road = RoadTravelledOn(seg.text)).empty()) break;
     }
-    // ("the road", "the street" name no road in particular.)
     const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
-    if (!pick && distinctive) {
-      for (const auto& l : limits) {
-        if (l.owner <= 1 && l.road == v1_road) {
-          pick = &l;
-          break;
-        }
-      }
-    }
+    const Limit* pick = first_limit([](const Limit& l) { return l.owner == 1; });
+    if (!pick && distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.road == v1_road; });
     if (!pick && v1_axis >= 0) {
-      for (const auto& l : limits) {
-        if (l.owner <= 1 && l.axis && *l.axis == v1_axis) {
-          pick = &l;
-          break;
-        }
-      }
+      pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.axis && *l.axis == v1_axis; });
     }
     // A limit said of a road across V1's course is the other road's.
-    if (!pick && v1_axis >= 0) {
-      for (const auto& l : limits) {
-        if (l.owner <= 1 && !l.axis) {
-          pick = &l;
-          break;
-        }
-      }
-    }
-    if (!pick) {
-      for (const auto& l : limits) {
-        if (l.owner <= 1) {
-          pick = &l;
-          break;
-        }
-      }
-    }
+    if (!pick && v1_axis >= 0) pick = first_limit([](const Limit& l) { return l.owner <= 1 && !l.axis; });
+    if (!pick) pick = first_limit([](const Limit& l) { return l.owner <= 1; });
     if (!pick && !limits.empty()) pick = &limits.front();
     if (pick) {
       r.road.speed_limit_mps.Set(pick->mps, Provenance::kStated);
