@@ -43,6 +43,12 @@ double HeadingNear(const Polyline& p, double s) {
   return d.norm() < 1e-6 ? p.HeadingAt(s) : std::atan2(d.y(), d.x());
 }
 bool Turning(Manoeuvre m) { return m == Manoeuvre::kTurnLeft || m == Manoeuvre::kTurnRight; }
+// A vehicle outside a rear-end's impact that was stopped waits in the queue
+// ahead of the struck vehicle (the chain it is pushed into).
+bool QueuedAhead(const ImpactConfiguration& c, int i) {
+  return c.type == CrashType::kRearEnd && i != c.striker && i != c.struck &&
+         c.description.vehicles[static_cast<size_t>(i)].movement.value == Manoeuvre::kStopped;
+}
 bool JunctionType(CrashType t) {
   return t == CrashType::kAngle || t == CrashType::kTurnAcrossPath || t == CrashType::kTurnIntoPath;
 }
@@ -269,14 +275,13 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
     c.start_speed[static_cast<size_t>(b)] = std::min(c.start_speed[static_cast<size_t>(b)], std::max(sb, 0.0));
     if (vb.movement.value != Manoeuvre::kSlowing) c.start_speed[static_cast<size_t>(b)] = sb;
   }
-  // Vehicles outside the reconstructed impact: in a rear-end, those
-  // stopped wait in the queue ahead of the struck vehicle (the chain it is
-  // pushed into); the others follow the striker, each a gap further back.
+  // Vehicles outside the reconstructed impact: queued ones stand (QueuedAhead);
+  // the others follow the striker, each a gap further back.
   int following = 0;
   for (int i = 0; i < n; ++i) {
     if (i == a || i == b) continue;
     const auto& vi = d.vehicles[static_cast<size_t>(i)];
-    if (c.type == CrashType::kRearEnd && vi.movement.value == Manoeuvre::kStopped) {
+    if (QueuedAhead(c, i)) {
       c.start_speed[static_cast<size_t>(i)] = 0.0;
       c.impact_speed[static_cast<size_t>(i)] = 0.0;
       note(vi.id + ": not in the reconstructed impact; stopped in the queue ahead of " + vb.id);
@@ -498,10 +503,8 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
   // head-on across it, or a junction, is planned undivided.
   // A striker backing with its back into the other is planned on a straight
   // road whatever the type (the drive it leaves is not a mapped leg).
-  const bool backs_in = A.movement.value == Manoeuvre::kBacking &&
-                        (c.striker_area == ImpactArea::kRear || c.striker_area == ImpactArea::kRearLeft ||
-                         c.striker_area == ImpactArea::kRearRight) &&
-                        !c.obstacle;
+  const bool backs_in = A.movement.value == Manoeuvre::kBacking && c.striker_area != ImpactArea::kUnknown &&
+                        AreaIncludes(c.striker_area, ImpactArea::kRear) && !c.obstacle;
   const bool junction = JunctionType(type) && !backs_in;
   spec.divided = d.road.divided.value && (type == CrashType::kRearEnd || type == CrashType::kSideswipeSame);
   if (junction) {
@@ -568,118 +571,121 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
                      std::string("backing out of a drive on the ") + (left ? "north" : "south") + " side", false, true};
     pa.reverse = true;
     pa.impact_s = pa.path.Project(Vec2(0.0, y_lane + side * (HalfWidth(cb) + HalfLength(ca)))).s;
-  } else
-  switch (type) {
-    case CrashType::kRearEnd: {
-      const int lane = B.lane.value ? std::min(*B.lane.value, kerb) : A.lane.value ? std::min(*A.lane.value, kerb) : 0;
-      pa = pb = road_lane(Compass::kEast, lane);
-      pb.impact_s = kStraightLength / 2;
-      pa.impact_s = pb.impact_s - HalfLength(ca) - HalfLength(cb);
-      break;
-    }
-    case CrashType::kHeadOn:
-    case CrashType::kSideswipeOpposite: {
-      if (corner) {
-        corner_contact();
+  } else {
+    switch (type) {
+      case CrashType::kRearEnd: {
+        const int lane =
+            B.lane.value ? std::min(*B.lane.value, kerb) : A.lane.value ? std::min(*A.lane.value, kerb) : 0;
+        pa = pb = road_lane(Compass::kEast, lane);
+        pb.impact_s = kStraightLength / 2;
+        pa.impact_s = pb.impact_s - HalfLength(ca) - HalfLength(cb);
         break;
       }
-      // The striker drifts over the centre line into the oncoming lane.
-      pb = road_lane(Compass::kWest, 0);
-      const double overlap = type == CrashType::kHeadOn ? 0.0 : HalfWidth(ca) + HalfWidth(cb) - 0.4;
-      const double y_to = w / 2 - overlap;
-      pa = {DubinsLaneChange(-w / 2, y_to, -30.0 - 2.4 * std::sqrt(radius * w), radius), 0.0,
-            "east lane 0 drifting over the centre line", true};
-      pb.impact_s = pb.path.Project(Vec2(HalfLength(cb), w / 2)).s;
-      pa.impact_s = pa.path.Project(Vec2(-HalfLength(ca), y_to)).s;
-      break;
-    }
-    case CrashType::kSideswipeSame: {
-      if (corner) {
-        corner_contact();
-        break;
-      }
-      // One vehicle moves into the other's lane from the side the damage
-      // names (a struck left side or a striking right side: the striker is
-      // on the struck vehicle's left); without damage, from the side its
-      // lane change says. Variants: the struck vehicle is the one changing
-      // lanes (bit 1), the striker's front further forward (bit 0).
-      bool from_left = HasLeft(c.struck_area) || (c.struck_area == ImpactArea::kUnknown && HasRight(c.striker_area));
-      if (!HasLeft(c.struck_area) && !HasRight(c.struck_area) && !HasLeft(c.striker_area) &&
-          !HasRight(c.striker_area)) {
-        from_left = A.movement.value == Manoeuvre::kLaneChangeRight;
-      }
-      const int lb = from_left ? 1 : 0, la = from_left ? 0 : 1;
-      const double ya = -(0.5 + la) * w, yb = -(0.5 + lb) * w;
-      const double forward = flip ? HalfLength(cb) : 0.0;
-      if (!swap_turner) {
-        pb = road_lane(Compass::kEast, lb);
-        pa = {DubinsLaneChange(ya, yb, -20.0 - 2.4 * std::sqrt(radius * w), radius), 0.0,
-              label(Compass::kEast, la, from_left ? "changing lanes right" : "changing lanes left"), true};
-        pb.impact_s = pb.path.Project(Vec2(0.0, yb)).s;
-        pa.impact_s = pa.path.Project(Vec2(-HalfLength(ca) + forward, yb)).s;
-      } else {
-        const double vb = c.impact_speed[static_cast<size_t>(c.struck)];
-        const double rb = std::max(config.min_turn_radius, vb * vb / lim.lateral);
-        pa = road_lane(Compass::kEast, la);
-        pb = {DubinsLaneChange(yb, ya, -2.4 * std::sqrt(rb * w), rb), 0.0,
-              label(Compass::kEast, lb, from_left ? "changing lanes left" : "changing lanes right"), true};
-        pb.impact_s = pb.path.Project(Vec2(0.0, ya)).s;
-        pa.impact_s = pa.path.Project(Vec2(-HalfLength(ca) + forward, ya)).s;
-      }
-      break;
-    }
-    case CrashType::kAngle: {
-      // The striker's front meets the struck vehicle's side; which side
-      // decides where the striker comes from.
-      const bool from_left = !HasRight(c.struck_area);
-      if (spec.type == RoadType::kIntersection) {
-        pb = through(flip ? Compass::kWest : Compass::kEast, kerb);
-        pa = through(from_left != flip ? Compass::kSouth : Compass::kNorth, kerb);
-      } else if (!swap_turner) {  // the striker comes out of the stem, northbound
-        const bool west = from_left != flip;
-        pb = through(west ? Compass::kWest : Compass::kEast, kerb);
-        pa = turning(Compass::kNorth, kerb, west ? Turn::kLeft : Turn::kRight);
-      } else {  // the struck vehicle pulls out of the stem across the striker's path
-        const bool left = !from_left;
-        pb = turning(Compass::kNorth, left ? 0 : kerb, left ? Turn::kLeft : Turn::kRight);
-        pa = through(flip != left ? Compass::kWest : Compass::kEast, left ? 0 : kerb);
-      }
-      pa.impact_s = Meet(pa.path, pb.path);
-      pb.impact_s = pb.path.Project(pa.path.PointAt(pa.impact_s)).s;
-      pa.impact_s -= HalfLength(ca) + HalfWidth(cb);
-      break;
-    }
-    case CrashType::kTurnAcrossPath:
-    case CrashType::kTurnIntoPath: {
-      // One vehicle turns; the other goes straight.
-      const bool a_turns = (Turning(A.movement.value) || !Turning(B.movement.value)) != swap_turner;
-      const auto& turner = a_turns ? A : B;
-      const Turn turn = turner.movement.value == Manoeuvre::kTurnRight ? Turn::kRight : Turn::kLeft;
-      VehiclePath turn_path, straight_path;
-      if (type == CrashType::kTurnAcrossPath) {
-        if (spec.type == RoadType::kIntersection) {
-          turn_path = turning(Compass::kNorth, turn == Turn::kLeft ? 0 : kerb, turn);
-          straight_path =
-              through(turn == Turn::kLeft ? Compass::kSouth : Compass::kNorth, turn == Turn::kLeft ? 0 : kerb);
-        } else {  // westbound on the through road, turning left into the stem
-          turn_path = turning(Compass::kWest, 0, Turn::kLeft);
-          straight_path = through(Compass::kEast, 0);
+      case CrashType::kHeadOn:
+      case CrashType::kSideswipeOpposite: {
+        if (corner) {
+          corner_contact();
+          break;
         }
-      } else {  // from the side road (south) into the main road; the other from the west (or east)
-        turn_path = turning(Compass::kNorth, turn == Turn::kLeft ? 0 : kerb, turn);
-        straight_path = flip ? through(Compass::kWest, 0) : through(Compass::kEast, turn == Turn::kLeft ? 0 : kerb);
+        // The striker drifts over the centre line into the oncoming lane.
+        pb = road_lane(Compass::kWest, 0);
+        const double overlap = type == CrashType::kHeadOn ? 0.0 : HalfWidth(ca) + HalfWidth(cb) - 0.4;
+        const double y_to = w / 2 - overlap;
+        pa = {DubinsLaneChange(-w / 2, y_to, -30.0 - 2.4 * std::sqrt(radius * w), radius), 0.0,
+              "east lane 0 drifting over the centre line", true};
+        pb.impact_s = pb.path.Project(Vec2(HalfLength(cb), w / 2)).s;
+        pa.impact_s = pa.path.Project(Vec2(-HalfLength(ca), y_to)).s;
+        break;
       }
-      pa = a_turns ? turn_path : straight_path;
-      pb = a_turns ? straight_path : turn_path;
-      pa.impact_s = Meet(pa.path, pb.path);
-      pb.impact_s = pb.path.Project(pa.path.PointAt(pa.impact_s)).s;
-      pa.impact_s -= HalfLength(ca) + HalfWidth(cb);
-      break;
+      case CrashType::kSideswipeSame: {
+        if (corner) {
+          corner_contact();
+          break;
+        }
+        // One vehicle moves into the other's lane from the side the damage
+        // names (a struck left side or a striking right side: the striker is
+        // on the struck vehicle's left); without damage, from the side its
+        // lane change says. Variants: the struck vehicle is the one changing
+        // lanes (bit 1), the striker's front further forward (bit 0).
+        bool from_left = HasLeft(c.struck_area) || (c.struck_area == ImpactArea::kUnknown && HasRight(c.striker_area));
+        if (!HasLeft(c.struck_area) && !HasRight(c.struck_area) && !HasLeft(c.striker_area) &&
+            !HasRight(c.striker_area)) {
+          from_left = A.movement.value == Manoeuvre::kLaneChangeRight;
+        }
+        const int lb = from_left ? 1 : 0, la = from_left ? 0 : 1;
+        const double ya = -(0.5 + la) * w, yb = -(0.5 + lb) * w;
+        const double forward = flip ? HalfLength(cb) : 0.0;
+        if (!swap_turner) {
+          pb = road_lane(Compass::kEast, lb);
+          pa = {DubinsLaneChange(ya, yb, -20.0 - 2.4 * std::sqrt(radius * w), radius), 0.0,
+                label(Compass::kEast, la, from_left ? "changing lanes right" : "changing lanes left"), true};
+          pb.impact_s = pb.path.Project(Vec2(0.0, yb)).s;
+          pa.impact_s = pa.path.Project(Vec2(-HalfLength(ca) + forward, yb)).s;
+        } else {
+          const double vb = c.impact_speed[static_cast<size_t>(c.struck)];
+          const double rb = std::max(config.min_turn_radius, vb * vb / lim.lateral);
+          pa = road_lane(Compass::kEast, la);
+          pb = {DubinsLaneChange(yb, ya, -2.4 * std::sqrt(rb * w), rb), 0.0,
+                label(Compass::kEast, lb, from_left ? "changing lanes left" : "changing lanes right"), true};
+          pb.impact_s = pb.path.Project(Vec2(0.0, ya)).s;
+          pa.impact_s = pa.path.Project(Vec2(-HalfLength(ca) + forward, ya)).s;
+        }
+        break;
+      }
+      case CrashType::kAngle: {
+        // The striker's front meets the struck vehicle's side; which side
+        // decides where the striker comes from.
+        const bool from_left = !HasRight(c.struck_area);
+        if (spec.type == RoadType::kIntersection) {
+          pb = through(flip ? Compass::kWest : Compass::kEast, kerb);
+          pa = through(from_left != flip ? Compass::kSouth : Compass::kNorth, kerb);
+        } else if (!swap_turner) {  // the striker comes out of the stem, northbound
+          const bool west = from_left != flip;
+          pb = through(west ? Compass::kWest : Compass::kEast, kerb);
+          pa = turning(Compass::kNorth, kerb, west ? Turn::kLeft : Turn::kRight);
+        } else {  // the struck vehicle pulls out of the stem across the striker's path
+          const bool left = !from_left;
+          pb = turning(Compass::kNorth, left ? 0 : kerb, left ? Turn::kLeft : Turn::kRight);
+          pa = through(flip != left ? Compass::kWest : Compass::kEast, left ? 0 : kerb);
+        }
+        pa.impact_s = Meet(pa.path, pb.path);
+        pb.impact_s = pb.path.Project(pa.path.PointAt(pa.impact_s)).s;
+        pa.impact_s -= HalfLength(ca) + HalfWidth(cb);
+        break;
+      }
+      case CrashType::kTurnAcrossPath:
+      case CrashType::kTurnIntoPath: {
+        // One vehicle turns; the other goes straight.
+        const bool a_turns = (Turning(A.movement.value) || !Turning(B.movement.value)) != swap_turner;
+        const auto& turner = a_turns ? A : B;
+        const Turn turn = turner.movement.value == Manoeuvre::kTurnRight ? Turn::kRight : Turn::kLeft;
+        VehiclePath turn_path, straight_path;
+        if (type == CrashType::kTurnAcrossPath) {
+          if (spec.type == RoadType::kIntersection) {
+            turn_path = turning(Compass::kNorth, turn == Turn::kLeft ? 0 : kerb, turn);
+            straight_path =
+                through(turn == Turn::kLeft ? Compass::kSouth : Compass::kNorth, turn == Turn::kLeft ? 0 : kerb);
+          } else {  // westbound on the through road, turning left into the stem
+            turn_path = turning(Compass::kWest, 0, Turn::kLeft);
+            straight_path = through(Compass::kEast, 0);
+          }
+        } else {  // from the side road (south) into the main road; the other from the west (or east)
+          turn_path = turning(Compass::kNorth, turn == Turn::kLeft ? 0 : kerb, turn);
+          straight_path = flip ? through(Compass::kWest, 0) : through(Compass::kEast, turn == Turn::kLeft ? 0 : kerb);
+        }
+        pa = a_turns ? turn_path : straight_path;
+        pb = a_turns ? straight_path : turn_path;
+        pa.impact_s = Meet(pa.path, pb.path);
+        pb.impact_s = pb.path.Project(pa.path.PointAt(pa.impact_s)).s;
+        pa.impact_s -= HalfLength(ca) + HalfWidth(cb);
+        break;
+      }
+      case CrashType::kSingleVehicle:
+        std::tie(pa, pb) =
+            ObstaclePaths(map, d.obstacle.value, Party{ca, c.striker_area, A.movement.value, radius}, cb);
+        break;
+      default: throw std::invalid_argument("type: cannot reconstruct crash type " + std::string(ToString(type)));
     }
-    case CrashType::kSingleVehicle:
-      std::tie(pa, pb) = ObstaclePaths(map, d.obstacle.value, Party{ca, c.striker_area, A.movement.value, radius}, cb);
-      break;
-    default: throw std::invalid_argument("type: cannot reconstruct crash type " + std::string(ToString(type)));
   }
   std::vector<LaneCombination> out;
   for (const double shift : {0.0, -0.35, 0.35}) {
@@ -696,7 +702,7 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
         k.paths[i] = pa;
       } else if (static_cast<int>(i) == c.struck) {
         k.paths[i] = pb;
-      } else if (c.start_speed[i] == 0.0 && c.impact_speed[i] == 0.0 && type == CrashType::kRearEnd) {
+      } else if (QueuedAhead(c, static_cast<int>(i))) {
         const double hl = HalfLength(d.vehicles[i].vehicle_class.value);
         k.paths[i] = pb;
         k.paths[i].impact_s = queue_front + kQueueGap + hl;
