@@ -1404,9 +1404,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kEachHas(
         R"(\beach direction\b[^.;]{0,30}?\bhas\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
     static const regex kDirectional(
-        R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west))");
+        R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(
-        R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west))))");
+        R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
     static const regex kOneWayHere(R"(\boneway\b)");
     // Roads named with their axis ("a north/south rural highway and an
     // east/west county road") give it to later sentences about them ("the
@@ -1482,7 +1482,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
            ++it) {
-        add(*it, static_cast<size_t>(it->position()), 0, 0, std::stoi((*it)[1].matched ? (*it)[1].str() : (*it)[2].str()));
+        const auto& m = *it;
+        add(m, static_cast<size_t>(m.position()), 0, 0, std::stoi(m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str()));
       }
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTotal); it != std::sregex_iterator(); ++it) {
         // "lane 2" / "the 2 lanes to the left" are not road descriptions; "2-lane", "2 lane road" are.
@@ -1498,8 +1499,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // lane": the road's lanes, listed; their sum is its total (after the
       // other statements: a stated total comes first).
       {
+        // Also "2 lanes northbound and 1 lane southbound", "3 lanes for
+        // northbound traffic and 2 for southbound traffic".
         static const regex kListed(
-            R"(\b(\d|a|an)\s+(?:(?:north|south|east|west)bound\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|through\s+|travel\s+)?|(?:center|centre|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?)lanes?\b)");
+            R"(\b(\d|a|an)\s+(?:(?:(?:north|south|east|west)bound\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|through\s+|travel\s+)?|(?:center|centre|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?)lanes?\b|(?:(?:travel\s+|through\s+)?lanes?\s+)?(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b(?:\s+traffic\b)?))");
         static const regex kJoin(R"(^\s*(?:,\s*(?:and\s+)?|and\s+))");
         int sum = 0, items = 0;
         size_t first = 0, last_end = 0;
@@ -1592,12 +1595,26 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       r.road.lanes_per_direction.Set(1, Provenance::kInferred);
       best = nullptr;
     }
+    // ACCSIM_DEBUG_ROADS=1 lists every lane statement on stderr and marks
+    // the one taken for V1's road.
+    if (std::getenv("ACCSIM_DEBUG_ROADS")) {
+      for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d]%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, &rs == best ? " <- best" : "");
+    }
     if (best) {
       // Combine statements about the same road (a total in one sentence, the
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
       bool one_way = best->one_way || best->ramp;  // a ramp carries one direction
-      for (const auto& rs : roads) {
+      // The best statement's own sentence first: the one before may count
+      // another road ("a 5-lane road and a 3-lane road. the 3-lane road had
+      // 2 lanes northbound and 1 southbound").
+      std::vector<const RoadStatement*> near;
+      for (const auto& rs : roads) near.push_back(&rs);
+      std::stable_sort(near.begin(), near.end(), [&](const RoadStatement* a, const RoadStatement* b) {
+        return (a->sentence == best->sentence) > (b->sentence == best->sentence);
+      });
+      for (const RoadStatement* rp : near) {
+        const RoadStatement& rs = *rp;
         if (&rs == best || rs.owner > 1 || rs.one_way != best->one_way || rs.ramp != best->ramp ||
             (rs.axis && best->axis && rs.axis != best->axis)) {
           continue;
@@ -1678,6 +1695,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);
     else if (divided) r.road.divided.Set(true, Provenance::kStated);
+    // A divided road whose lanes the report does not count carries more than
+    // one lane each way as a rule.
+    if (r.road.divided.value && !r.road.one_way.value && !r.road.lanes_per_direction.known()) {
+      r.road.lanes_per_direction.Set(2, Provenance::kInferred);
+      r.road.lanes_total.Set(4, Provenance::kInferred);
+    }
 
     // V1 leaving a driveway or parking lot was on it: NASS counts its lanes,
     // a two-way drive of one lane each way unless the report counts them.

@@ -1330,5 +1330,37 @@ TEST(NarrativeExtractorTest, DriversFoldedIntoTheCrashSentenceAndMakeFirstDescri
   EXPECT_EQ(make_first.crash.struck.value, "V1");
 }
 
+TEST(NarrativeExtractorTest, LanesCountedByDirectionAfterTheCount) {
+  const auto listed = kExtractor.Extract(
+      "V1, a 2001 Ford Taurus, was northbound on a roadway with two lanes northbound and one lane southbound. V2 was "
+      "stopped ahead of V1. The front of V1 struck the back of V2.");
+  EXPECT_EQ(listed.road.lanes_total.value, 3);
+  const auto for_traffic = kExtractor.Extract(
+      "V1 was northbound on a road that has three lanes for northbound traffic and two for southbound traffic. V2 "
+      "was stopped ahead of V1. The front of V1 struck the back of V2.");
+  EXPECT_EQ(for_traffic.road.lanes_total.value, 5);
+  const auto one_way = kExtractor.Extract(
+      "V1 was northbound on a one-way road with 3 lanes northbound. V2 was stopped ahead of V1. The front of V1 "
+      "struck the back of V2.");
+  EXPECT_EQ(one_way.road.lanes_total.value, 3);
+  // The sentence that splits a road's lanes by direction outranks the one
+  // before it, which counted two roads.
+  const auto two_roads = kExtractor.Extract(
+      "The crash occurred in a T-intersection of a five-lane two-way roadway and a three-lane two-way roadway. The "
+      "five-lane roadway had two lanes eastbound and two lanes westbound with a center two-way left turn lane. The "
+      "three-lane roadway had two lanes northbound and one lane southbound. V1 was traveling northbound attempting "
+      "to turn left. V2 was traveling in the second eastbound lane. The front of V1 struck the left side of V2.");
+  EXPECT_EQ(two_roads.road.lanes_total.value, 3);
+}
+
+TEST(NarrativeExtractorTest, UncountedDividedRoadHasTwoLanesEachWay) {
+  const auto r = kExtractor.Extract(
+      "The crash occurred on a divided highway with a grass median. V1 was eastbound. V2 was stopped ahead of V1. "
+      "The front of V1 struck the back of V2.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+  EXPECT_EQ(r.road.lanes_per_direction.source, Provenance::kInferred);
+}
+
 }  // namespace
 }  // namespace accsim
