@@ -77,7 +77,7 @@ string Normalise(std::string_view in) {
       space = false;
     }
   }
-  static const regex kMph(R"(\bm\.p\.h\.?|\bmiles per hour\b|\bmiles an hour\b)");
+  static const regex kMph(R"(\bm\.p\.h\.?|\bmiles? per hour\b|\bmiles? an hour\b)");
   static const regex kKmh(R"(\bkm\s*/\s*hr?\b|\bkph\b|\bkmph\b|\bkm/h\b|\bkilometers per hour\b|\bkilometres per hour\b|\bkm per hour\b)");
   static const regex kOneWay(R"(\bone[- ]way\b)");
   static const regex kNonContact(R"(\bnon[- ]?contact\b)");
@@ -87,6 +87,10 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kNonContact, "noncontact");
   static const regex kSingleLane(R"(\bsingle[- ]lane\b)");
   s = std::regex_replace(s, kSingleLane, "1-lane");
+  // "the maximum speed allowed", "the legal speed": the limit.
+  static const regex kLimitSynonym(
+      R"(\b(?:maximum|max\.?)\s+(?:legal\s+|allowed\s+|allowable\s+|permitted\s+|posted\s+)?speed(?:\s+(?:allowed|permitted|limit))?\b|\b(?:legal|lawful)\s+speed(?:\s+limit)?\b)");
+  s = std::regex_replace(s, kLimitSynonym, "speed limit");
   // Police abbreviations, whole words only: "nb on elm st", "a 4 ln rdwy".
   static const std::array<std::pair<regex, const char*>, 9> kAbbreviations = {{
       {regex(R"(\bnb\b)"), "northbound"},

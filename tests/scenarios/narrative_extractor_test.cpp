@@ -1362,5 +1362,15 @@ TEST(NarrativeExtractorTest, UncountedDividedRoadHasTwoLanesEachWay) {
   EXPECT_EQ(r.road.lanes_per_direction.source, Provenance::kInferred);
 }
 
+TEST(NarrativeExtractorTest, LimitSynonymsAndSingularMiles) {
+  for (const char* limit : {"The roadway was a 45 mile per hour zone.", "The maximum speed allowed is 45 mph.",
+                            "The legal speed was 45 mph."}) {
+    const auto r = kExtractor.Extract(std::string("V1 was northbound on a two-lane road. ") + limit +
+                                      " V2 was stopped ahead of V1. The front of V1 struck the back of V2.");
+    EXPECT_NEAR(r.road.speed_limit_mps.value, 45 * 0.44704, 1e-6) << limit;
+    EXPECT_TRUE(r.road.speed_limit_mps.known()) << limit;
+  }
+}
+
 }  // namespace
 }  // namespace accsim
