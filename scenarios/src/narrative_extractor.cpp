@@ -775,7 +775,10 @@ string RoadTravelledOn(const string& full) {
 // "exiting a parking lot driveway", "at the parking lot exit".
 bool LeavesDriveway(const string& t) {
   static const regex kFromDriveway(
-      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b)");
+      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b|)"
+      // "stopped at the mouth of the driveway", "drove south through the exit driveway".
+      R"(\b(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
+      R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b)");
   return Has(t, kFromDriveway);
 }
 
@@ -911,7 +914,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // "the stopped jetta", "the oncoming ford": a state word may come first.
       const regex alias_re(
           R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|first|second)\s+)?()" +
-          alt + R"()\b(?!\s+(?:driver|was driven)))");
+          alt + R"()\b(?!\s+driver))");
       std::map<string, int> lookup(aliases.begin(), aliases.end());
       for (Sentence& s : sentences) {
         s.text = ReplaceWith(s.text, alias_re, [&](const smatch& m) { return "v" + std::to_string(lookup[m[1].str()]); });
@@ -1065,7 +1068,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:\w+\s+)?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1716,9 +1719,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (Has(seg.text, kMiddleLane)) v1_middle_lane = true;
     }
     if (v1_from_driveway && !(best && best->owner == 1)) {
-      r.road.one_way.Set(false, Provenance::kInferred);
+      // ... one lane when the report says the drive is one-way or one lane
+      // ("a one-way, exit-only driveway", "a narrow, 1-lane paved alley").
+      static const regex kOneLaneDrive(
+          R"(\b(?:oneway|1-lane|(?:exit|entrance)[- ]only)\b[^.;]{0,30}?\b(?:driveway|drive|alley)\b|\b(?:driveway|alley)\b[^.;]{0,20}?\b(?:is|was) (?:a )?(?:oneway|1-lane)\b)");
+      const bool one_lane = Has(scene, kOneLaneDrive);
+      r.road.one_way.Set(one_lane, Provenance::kInferred);
       r.road.divided.Set(false, Provenance::kInferred);
-      r.road.lanes_total.Set(2, Provenance::kInferred);
+      r.road.lanes_total.Set(one_lane ? 1 : 2, Provenance::kInferred);
       r.road.lanes_per_direction.Set(1, Provenance::kInferred);
     }
     // A middle lane, or a stated lane number beyond the count, means more lanes.

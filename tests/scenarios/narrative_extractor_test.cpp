@@ -1372,5 +1372,41 @@ TEST(NarrativeExtractorTest, LimitSynonymsAndSingularMiles) {
   }
 }
 
+TEST(NarrativeExtractorTest, MakeNamedDriverSentencesAndUnnumberedTrucksKeepTheirVehicle) {
+  // "The Pontiac was driven by ..." is V1's paragraph: what its driver said
+  // follows V1, not the vehicle named last.
+  const auto driven = kExtractor.Extract(
+      "Vehicle 1, a 2000 Pontiac Grand Am, was westbound and turned left at the intersection. Vehicle 2, a 2005 Jeep "
+      "Liberty, was eastbound, going straight. The front of Vehicle 2 struck the right side of Vehicle 1. The Pontiac "
+      "was driven by a belted 17-year-old male. He estimated that he had slowed from 35 mph to 15 mph for the turn.");
+  ASSERT_EQ(driven.vehicles.size(), 2u);
+  EXPECT_EQ(driven.vehicles[1].pre_event.value, Movement::kStraight);
+  // "A northbound box truck that had stopped ..." is another road user, not
+  // the vehicle of the sentence before.
+  const auto truck = kExtractor.Extract(
+      "V1 was southbound and turning left. V2 was northbound approaching on the green signal. A northbound box truck "
+      "that had stopped in the curb lane partially blocked the view. The front of V2 struck the right side of V1.");
+  ASSERT_EQ(truck.vehicles.size(), 2u);
+  EXPECT_EQ(truck.vehicles[1].pre_event.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, DriveLeftAtItsMouthAndOneLaneDrives) {
+  // V1 waiting at the mouth of a drive was on the drive: two lanes.
+  const auto mouth = kExtractor.Extract(
+      "The arterial was a five-lane roadway. Vehicle #1 had stopped at the mouth of the driveway facing west, waiting "
+      "to turn left. Vehicle #2 was traveling north in the curb lane. The front of Vehicle #2 struck the left side of "
+      "Vehicle #1.");
+  EXPECT_EQ(mouth.road.lanes_total.value, 2);
+  // A one-way, exit-only drive or a 1-lane alley: one lane.
+  const auto exit_only = kExtractor.Extract(
+      "Mill Road is a two-lane road. The station has a one-way, exit-only driveway onto Mill Road. V1 drove south "
+      "through the exit driveway to turn right. V2 was westbound. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(exit_only.road.lanes_total.value, 1);
+  const auto alley = kExtractor.Extract(
+      "V1 was backing out of an alley onto Lincoln Street. The alley is a narrow, one-lane paved alley. Lincoln "
+      "Street has two travel lanes. V2 was northbound. The back of V1 struck the right side of V2.");
+  EXPECT_EQ(alley.road.lanes_total.value, 1);
+}
+
 }  // namespace
 }  // namespace accsim
