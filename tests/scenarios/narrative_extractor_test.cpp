@@ -1408,5 +1408,17 @@ TEST(NarrativeExtractorTest, DriveLeftAtItsMouthAndOneLaneDrives) {
   EXPECT_EQ(alley.road.lanes_total.value, 1);
 }
 
+TEST(NarrativeExtractorTest, ParkedCarsAfterAVehicleAreNotIt) {
+  for (const char* parked : {"Vehicles parked along the south curb limited the view to the left.",
+                             "Parked cars lined the curb on both sides."}) {
+    const auto r = kExtractor.Extract(
+        std::string("V1 was northbound on the one-way street and stopped at the stop sign, intending to turn left. ") +
+        parked + " V2 was eastbound. The front of V2 struck the left side of V1.");
+    ASSERT_EQ(r.vehicles.size(), 2u) << parked;
+    EXPECT_FALSE(r.vehicles[0].parked.value) << parked;
+    EXPECT_NE(r.crash.type.value, CrashType::kSingleVehicle) << parked;
+  }
+}
+
 }  // namespace
 }  // namespace accsim
