@@ -310,7 +310,8 @@ Kind KindOf(const string& s) {
 }
 
 // Sentences split at '.', '!', '?' or ';' unless inside a number ("2.5"),
-// after a common abbreviation, or after a single letter ("u.s."); run-on
+// after a common abbreviation, or after a single letter ("u.s.", not the
+// end of "cr-v."); run-on
 // sentences ("roadway.The driver") split too.
 std::vector<string> SplitSentences(const string& s) {
   static const std::set<string> kAbbrev = {"approx", "no", "st", "ave", "mr", "mrs", "ms", "dr", "vs", "etc",
@@ -346,7 +347,9 @@ std::vector<string> SplitSentences(const string& s) {
         size_t w = cur.size();
         while (w > 0 && (std::isalpha(static_cast<unsigned char>(cur[w - 1])) || cur[w - 1] == '.')) --w;
         const string word = cur.substr(w);
-        if (kAbbrev.count(word) || word.size() == 1) {
+        // A letter ending a hyphenated model ("the cr-v. both ...") is no initial.
+        const bool initial = word.size() == 1 && (w == 0 || cur[w - 1] != '-');
+        if (kAbbrev.count(word) || initial) {
           cur += c;
           continue;
         }
@@ -386,7 +389,9 @@ VehicleClass ClassOf(const string& d) {
 // street", "halfway between 2 cross streets") is not where the crash was.
 string WithoutDistantJunctions(const string& s) {
   static const regex kDistant(
-      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b|\b(?:away from|not near|nowhere near|far from)\s+(?:any|an?|the)\s+[^.;,]{0,40})");
+      R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b|\b(?:away from|not near|nowhere near|far from)\s+(?:any|an?|the)\s+[^.;,]{0,40})"
+      // "the nearest ramp was about 700 meters away".
+      R"(|\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50})");
   return std::regex_replace(s, kDistant, " ");
 }
 
@@ -1500,7 +1505,18 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (Has(after, kNotARoadAfter)) continue;
         static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)");
         if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), kNotARoadBefore)) continue;
-        add(*it, static_cast<size_t>(it->position()), std::stoi((*it)[1].str()), 0, 0);
+        // "the eastbound roadway had 3 travel lanes", "the southbound side
+        // widened to 3 lanes", "the eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
+        // ("2 through lanes and a left-turn bay").
+        static const regex kDirectionSubject(
+            R"(\b(?:north|south|east|west)bound\s+(?:roadway|side|carriageway|half|direction|approach)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+        static const regex kBayAfter(R"(^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
+        const int n = std::stoi((*it)[1].str());
+        if (Has(before.substr(before.size() > 60 ? before.size() - 60 : 0), kDirectionSubject)) {
+          add(*it, static_cast<size_t>(it->position()), 0, 0, n + (Has(after, kBayAfter) ? 1 : 0));
+          continue;
+        }
+        add(*it, static_cast<size_t>(it->position()), n, 0, 0);
       }
       // "1 northbound lane, 1 southbound lane and a northbound left-turn
       // lane": the road's lanes, listed; their sum is its total (after the

@@ -1420,5 +1420,30 @@ TEST(NarrativeExtractorTest, ParkedCarsAfterAVehicleAreNotIt) {
   }
 }
 
+TEST(NarrativeExtractorTest, OneDirectionsLanesAndTheNearestRamp) {
+  // "the eastbound roadway had 3 travel lanes" on a divided freeway counts
+  // one direction; "the nearest ramp was 700 meters away" is not the place.
+  const auto freeway = kExtractor.Extract(
+      "This crash occurred on the eastbound roadway of an urban freeway divided by a concrete barrier. The eastbound "
+      "roadway had three travel lanes. The nearest ramp was about 700 meters away. V1, a 2006 Dodge Charger, was "
+      "eastbound in the center lane. V2, a 2001 Honda CR-V, was eastbound in the right lane. The driver of V1 moved "
+      "to the right, and the right side of the Charger contacted the left side of the CR-V. Both vehicles stopped on "
+      "the right shoulder.");
+  EXPECT_TRUE(freeway.road.divided.value);
+  EXPECT_EQ(freeway.road.lanes_per_direction.value, 3);
+  EXPECT_EQ(freeway.crash.location.value, CrashLocation::kSegment);
+  // "the eastbound side had 2 through lanes and a left-turn bay": three.
+  const auto bay = kExtractor.Extract(
+      "V1 was eastbound on a divided boulevard. At the intersection the eastbound side had two through lanes and a "
+      "left-turn bay, separated from the westbound side by a raised median. V2 was westbound. The front of V2 struck "
+      "the right side of V1.");
+  EXPECT_EQ(bay.road.lanes_per_direction.value, 3);
+  // "on the southbound lanes of a five-lane undivided highway" is the total.
+  const auto total = kExtractor.Extract(
+      "This crash occurred on the southbound lanes of a five-lane undivided urban highway. V1 was southbound. V2 was "
+      "stopped ahead. The front of V1 struck the back of V2.");
+  EXPECT_EQ(total.road.lanes_total.value, 5);
+}
+
 }  // namespace
 }  // namespace accsim
