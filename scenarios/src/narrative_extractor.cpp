@@ -415,7 +415,7 @@ std::optional<Compass> CompassWord(const string& w) {
 // The first direction of travel stated in a piece of text about one vehicle.
 std::optional<Compass> DirectionIn(const string& s) {
   static const regex kDir(
-      R"(\b(north|south|east|west)[- ]?bound\b|\b(?:travel+(?:ing|ed|s)?|heading|headed|going|proceeding|proceeded|driving|moving|approaching from the|turn(?:ing|ed)?)\s+(?:due\s+)?(north|south|east|west)\b(?![/-]?(?:east|west))|\bin an? (north|south|east|west)(?:erly|ern)? direction)");
+      R"(\b(north|south|east|west)[- ]?bound\b|\b(?:travel+(?:ing|ed|s)?|heading|headed|going|proceeding|proceeded|driving|moving|facing|approaching from the|turn(?:ing|ed)?)\s+(?:due\s+)?(north|south|east|west)\b(?![/-]?(?:east|west))|\bin an? (north|south|east|west)(?:erly|ern)? direction)");
   // "in its westbound lane traveling east": a lane's direction is where the
   // vehicle is, a verb of travel says where it goes; the verb wins.
   static const regex kBoundLane(R"(^\w+[- ]?bound\s+(?:travel\s+|through\s+)?lanes?\b)");
@@ -783,7 +783,11 @@ bool LeavesDriveway(const string& t) {
       R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b|)"
       // "stopped at the mouth of the driveway", "drove south through the exit driveway".
       R"(\b(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
-      R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b)");
+      R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b|)"
+      // "was westbound in the driveway".
+      R"(\b(?:was|were) (?:[\w-]+ ){0,2}?(?:in|on|within) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley|parking lot)\b|)"
+      // "stopped at the plaza exit" (not a freeway's exit ramp).
+      R"(\b(?:stopped|waiting|sitting|paused) (?:at|in) (?:a|an|the) (?:[\w-]+ ){0,2}?exit\b(?! ramp))");
   return Has(t, kFromDriveway);
 }
 

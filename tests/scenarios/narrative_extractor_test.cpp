@@ -1406,6 +1406,19 @@ TEST(NarrativeExtractorTest, DriveLeftAtItsMouthAndOneLaneDrives) {
       "V1 was backing out of an alley onto Lincoln Street. The alley is a narrow, one-lane paved alley. Lincoln "
       "Street has two travel lanes. V2 was northbound. The back of V1 struck the right side of V2.");
   EXPECT_EQ(alley.road.lanes_total.value, 1);
+  // "was westbound in the driveway", "stopped at the plaza exit facing north".
+  const auto in_drive = kExtractor.Extract(
+      "The roadway was a three-lane, two-way road. Vehicle #1 was westbound in the driveway and stopped at the edge "
+      "of the roadway. Vehicle #2 was northbound. The front of Vehicle #2 struck the left side of Vehicle #1.");
+  EXPECT_EQ(in_drive.road.lanes_total.value, 2);
+  const auto plaza = kExtractor.Extract(
+      "The collector was a three-lane, two-way roadway. Vehicle #1 stopped at the plaza exit facing north, intending "
+      "to drive straight across. Vehicle #2 was traveling west. As Vehicle #1 crossed the westbound lane, the front "
+      "of Vehicle #2 struck the right side of Vehicle #1. Vehicle #1 was pushed to the west.");
+  EXPECT_EQ(plaza.road.lanes_total.value, 2);
+  ASSERT_FALSE(plaza.vehicles.empty());
+  EXPECT_EQ(plaza.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(plaza.crash.type.value, CrashType::kAngle);
 }
 
 TEST(NarrativeExtractorTest, ParkedCarsAfterAVehicleAreNotIt) {
