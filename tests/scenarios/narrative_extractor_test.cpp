@@ -1458,5 +1458,15 @@ TEST(NarrativeExtractorTest, OneDirectionsLanesAndTheNearestRamp) {
   EXPECT_EQ(total.road.lanes_total.value, 5);
 }
 
+TEST(NarrativeExtractorTest, HadComeToAStopIsAStop) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling westbound approaching a four-way stop. V2 was eastbound. V1 had come to a stop at its stop "
+      "line, intending to turn left. The driver of V1 began the left turn, and the front of V2 struck the right side "
+      "of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+}
+
 }  // namespace
 }  // namespace accsim
