@@ -1404,6 +1404,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   const VehicleRecord* v1 = r.vehicles.empty() ? nullptr : &r.vehicles.front();
   // -1: V1's axis is unknown (an int, not an optional: GCC 12 warns falsely on the latter).
   const int v1_axis = v1 && v1->travel.known() && v1->travel.value ? AxisOf(*v1->travel.value) : -1;
+  // A clause split off at ';' or a sentence about "it" ("the north/south
+  // roadway was a 2-lane street ...; it had a stop sign and a posted speed
+  // limit of 40 kmh") is about the road the sentence before began with.
+  auto inherited_axis = [&](size_t i, std::optional<int> axis) -> std::optional<int> {
+    static const regex kAnaphoric(R"(^\s*(?:it|its|it's|this (?:road|roadway|street)|that (?:road|roadway|street))\b)");
+    if (axis || i == 0 || !Has(sentences[i].text, kAnaphoric)) return axis;
+    return AxisIn(sentences[i - 1].text.substr(0, 40));
+  };
   // Which vehicle's segment a position in a sentence belongs to.
   auto owner_at = [&](const Sentence& s, size_t pos) {
     int owner = 0;
@@ -1465,6 +1473,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
         rs.axis = AxisIn(s.text.substr(start, pos - start + static_cast<size_t>(m.length(0))));
         if (!rs.axis) rs.axis = AxisIn(around);
+        rs.axis = inherited_axis(i, rs.axis);
         smatch sm;
         if (!rs.axis && std::regex_search(s.text, sm, kSubjectRoad) && axis_of_road.count(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0))) {
           rs.axis = axis_of_road.at(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0));
@@ -1701,8 +1710,23 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // At a junction, a divided road running across V1's course is the other
     // road ("the through roadway ran east/west and was a divided highway").
     const bool at_junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
+    // A sentence counting the lanes of a road other than V1's says nothing
+    // of V1's ("Grand Avenue ... each direction has 3 through lanes plus a
+    // left-turn bay next to the raised median", V1 on the 2-lane street).
+    auto other_roads_sentence = [&](size_t k) {
+      if (!best || k == best->sentence) return false;
+      bool counted = false;
+      for (const auto& rs : roads) {
+        if (rs.sentence != k) continue;
+        counted = true;
+        const bool same = rs.sentence <= best->sentence + 1 && !(rs.axis && best->axis && rs.axis != best->axis);
+        if (same) return false;
+      }
+      return counted;
+    };
     bool divided = false;
     for (const Sentence& s : sentences) {
+      if (other_roads_sentence(static_cast<size_t>(&s - sentences.data()))) continue;
       // "a median crossover", "stopped in the median": the other road's median.
       static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
       if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) ||
@@ -1842,7 +1866,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const double value = std::stod((*it)[1].str());
         if (value < 5 || value > 180) continue;
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
-                          AxisIn(before), order++, ClauseRoad(s.text, pos)});
+                          inherited_axis(static_cast<size_t>(&s - sentences.data()), AxisIn(before)), order++,
+                          ClauseRoad(s.text, pos)});
         found = true;
       }
       smatch m;

@@ -1468,5 +1468,24 @@ TEST(NarrativeExtractorTest, HadComeToAStopIsAStop) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
 }
 
+TEST(NarrativeExtractorTest, ClausesAfterASemicolonAndOtherRoadsMedians) {
+  // "...; it had a stop sign and a posted speed limit of 40 kmph" is about
+  // the north/south road the sentence began with, V1's.
+  const auto limit = kExtractor.Extract(
+      "The east/west roadway was a three-lane road; its posted speed limit was 64 kmph (40 mph). The north/south "
+      "roadway was a two-lane, two-way street that ended at the east/west road; it had a stop sign and a posted speed "
+      "limit of 40 kmph (25 mph). V1 was southbound on the side street and stopped at the stop sign. V2 was "
+      "westbound. The front of V2 struck the left side of V1.");
+  EXPECT_NEAR(limit.road.speed_limit_mps.value * 3.6, 40.0, 0.5);
+  // The raised median of the crossing road does not divide V1's street.
+  const auto median = kExtractor.Extract(
+      "Vehicle #1 was northbound on Linden Street, a two-lane city street with a 30 mph speed limit, approaching its "
+      "intersection with Grand Avenue. Grand Avenue is a divided east-west arterial. At Linden each direction has "
+      "three through lanes plus a left-turn bay next to the raised median, and the limit on Grand is 40 mph. Vehicle "
+      "#2 was eastbound on Grand. The front of Vehicle #2 struck the right side of Vehicle #1.");
+  EXPECT_FALSE(median.road.divided.value);
+  EXPECT_EQ(median.road.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
