@@ -572,7 +572,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
     }
   }
   static const regex kEntered(
-      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b)");
+      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b|)"
+      R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b)");
   // A lane's name is not a manoeuvre: "in the two-way left turn lane".
   static const regex kTurnLane(
       R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b|\b(?:left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b)");
@@ -647,8 +648,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // A vehicle the narrative leaves stopped or waiting to turn, whose driver
   // says it then turned, turned.
   // So did one that meant to turn and then entered the road.
-  const bool confirmed_left = (n.stopped && st.turn_left && !st.turn_right) || (n.intent_left && !n.intent_right && n.entered);
-  const bool confirmed_right = (n.stopped && st.turn_right && !st.turn_left) || (n.intent_right && !n.intent_left && n.entered);
+  const bool entered = n.entered || st.entered;  // "he ... pulled onto the highway" (a driver's account)
+  const bool confirmed_left = (n.stopped && st.turn_left && !st.turn_right) || (n.intent_left && !n.intent_right && entered);
+  const bool confirmed_right = (n.stopped && st.turn_right && !st.turn_left) || (n.intent_right && !n.intent_left && entered);
   const bool left = e.turn_left || (!e.turn_right && (n.coded_turn_left || confirmed_left));
   const bool right = !left && (e.turn_right || n.coded_turn_right || confirmed_right);
   if (left || right) {

@@ -1487,5 +1487,25 @@ TEST(NarrativeExtractorTest, ClausesAfterASemicolonAndOtherRoadsMedians) {
   EXPECT_EQ(median.road.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, IntendedTurnsMadeByPullingAwayOrBeginningTheTurn) {
+  // "intended to turn left ..., and began the turn": a left turn across V2.
+  const auto began = kExtractor.Extract(
+      "Vehicle one (V1 - case vehicle) was traveling west in the left westbound lane and was approaching a four-leg "
+      "intersection. Vehicle two (V2) was traveling east in the left eastbound lane of the same roadway. The driver "
+      "of V1 intended to turn left and travel south, and began the turn on a circular green signal. The driver of V2 "
+      "continued straight through the intersection and the front of V2 struck the right side of V1.");
+  ASSERT_EQ(began.vehicles.size(), 2u);
+  EXPECT_EQ(began.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(began.crash.type.value, CrashType::kTurnAcrossPath);
+  // "pulled away from the stop sign intending to turn left": it turned.
+  const auto pulled = kExtractor.Extract(
+      "Vehicle one (V1) was traveling east on a two-lane state highway approaching a T-intersection. Vehicle two (V2) "
+      "was traveling north on the intersecting road and had stopped at the stop sign. The driver of V2 pulled away "
+      "from the stop sign intending to turn left and travel west. The front of V2 struck the right side of V1.");
+  ASSERT_EQ(pulled.vehicles.size(), 2u);
+  EXPECT_EQ(pulled.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(pulled.crash.type.value, CrashType::kTurnIntoPath);
+}
+
 }  // namespace
 }  // namespace accsim
