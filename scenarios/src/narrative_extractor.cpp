@@ -2213,6 +2213,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       type = CrashType::kRearEnd;
     } else if (Has(impact_text, kHeadOnPhrase)) {
       type = CrashType::kHeadOn;
+    } else if (struck_plain_rear && sa.front && turner == b && turner_from_side) {
+      // Struck in the back just after turning onto the striker's road from
+      // a side road or drive: NASS codes the turn into its path (78/79).
+      type = CrashType::kTurnIntoPath;
     } else if (struck_plain_rear && sa.front && !opposite && !lane_change_at_impact) {
       type = CrashType::kRearEnd;
     } else if ((pulls_out_of_parking(a) || pulls_out_of_parking(b)) && !opposite) {

@@ -1507,5 +1507,19 @@ TEST(NarrativeExtractorTest, IntendedTurnsMadeByPullingAwayOrBeginningTheTurn) {
   EXPECT_EQ(pulled.crash.type.value, CrashType::kTurnIntoPath);
 }
 
+TEST(NarrativeExtractorTest, StruckInTheBackJustAfterTurningOntoTheRoadIsATurnIntoPath) {
+  const auto r = kExtractor.Extract(
+      "Vehicle one (V1) was traveling north in the northbound lane of a two-lane rural highway and was approaching a "
+      "T-intersection with a road that entered from the east. Vehicle two (V2) was traveling west on the "
+      "intersecting road and was approaching a yield sign. The driver of V2 did not yield and turned right onto the "
+      "highway, directly in front of V1. The front of V1 struck the rear of V2.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
+  // Without the turn it stays a rear-end.
+  const auto rear = kExtractor.Extract(
+      "V1 was traveling north on a two-lane rural highway. V2 was traveling north ahead of V1 and slowed for traffic. "
+      "The front of V1 struck the rear of V2.");
+  EXPECT_EQ(rear.crash.type.value, CrashType::kRearEnd);
+}
+
 }  // namespace
 }  // namespace accsim
