@@ -484,6 +484,7 @@ struct RoadStatement {
   bool one_way = false;
   bool cross = false;              // said of the cross street ("the cross street is a 2-lane road")
   bool ramp = false;               // said of a ramp ("a single-lane entrance ramp")
+  bool centre = false;             // its phrase adds a centre lane ("... separated by a 2-way left-turn lane")
 };
 
 std::optional<int> AxisIn(const string& s) {
@@ -1496,6 +1497,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         rs.cross = Has(around, kCrossStreet);
         static const regex kRampAfter(R"(^[\w ,-]{0,30}?\bramp\b)");
         rs.ramp = Has(s.text.substr(pos + static_cast<size_t>(m.length(0)), 40), kRampAfter);
+        // The phrase runs on to the next road named ("1 lane in each direction
+        // and an east/west 2-way roadway with ... a center left turn lane":
+        // the centre lane is the other road's).
+        static const regex kCentreLane(
+            R"(\b(?:center|centre|continuous|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|\b2[- ]way left[- ]turn lane\b)");
+        static const regex kRoadWord(R"(\b(?:road|roadway|street|highway|avenue|boulevard|route|arterial)\b)");
+        string phrase_after = s.text.substr(pos + static_cast<size_t>(m.length(0)));
+        smatch rw;
+        if (std::regex_search(phrase_after, rw, kRoadWord)) phrase_after = phrase_after.substr(0, static_cast<size_t>(rw.position()));
+        rs.centre = Has(s.text.substr(start, pos - start) + " " + phrase_after, kCentreLane);
         rs.total = total;
         rs.per_direction = per_dir;
         rs.directional = directional;
@@ -1527,8 +1538,23 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             R"(\b(?:north|south|east|west)bound\s+(?:roadway|side|carriageway|half|direction|approach)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
         static const regex kBayAfter(R"(^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
         const int n = std::stoi((*it)[1].str());
-        if (Has(before.substr(before.size() > 60 ? before.size() - 60 : 0), kDirectionSubject)) {
-          add(*it, static_cast<size_t>(it->position()), 0, 0, n + (Has(after, kBayAfter) ? 1 : 0));
+        smatch dm;
+        const string near_before = before.substr(before.size() > 60 ? before.size() - 60 : 0);
+        if (std::regex_search(near_before, dm, kDirectionSubject)) {
+          // ... unless that direction's road is one-way ("a northbound
+          // one-way roadway and a westbound one-way roadway. the northbound
+          // roadway had 3 travel lanes"): then it is the road's total.
+          static const regex kDirWord(R"(\b(north|south|east|west)bound\b)");
+          smatch wm;
+          const string subject = dm.str();
+          const string dir = std::regex_search(subject, wm, kDirWord) ? wm[1].str() : string();
+          const regex one_way_dir(R"(\b)" + dir + R"(bound\s+oneway\b|\boneway\s+(?:[\w-]+\s+)?)" + dir + R"(bound\b)");
+          if (!dir.empty() && Has(scene, one_way_dir)) {
+            add(*it, static_cast<size_t>(it->position()), n, 0, 0);
+            roads.back().one_way = true;
+          } else {
+            add(*it, static_cast<size_t>(it->position()), 0, 0, n + (Has(after, kBayAfter) ? 1 : 0));
+          }
           continue;
         }
         add(*it, static_cast<size_t>(it->position()), n, 0, 0);
@@ -1682,9 +1708,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       } else if (per) {
         // "2 through lanes in each direction separated by a continuous
         // two-way left-turn lane": the centre lane is a fifth.
-        static const regex kCentreLane(
-            R"(\b(?:center|centre|continuous|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|\b2[- ]way left[- ]turn lane\b)");
-        const int centre = Has(sentences[best->sentence].text, kCentreLane) ? 1 : 0;
+        const int centre = best->centre ? 1 : 0;
         r.road.lanes_per_direction.Set(per, Provenance::kStated);
         r.road.lanes_total.Set(total ? total : 2 * per + centre, total ? Provenance::kStated : Provenance::kInferred);
       } else if (total == 1 && Has(sentences[best->sentence].text, kTwoWay)) {
@@ -1867,8 +1891,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const bool kmh = (*it)[2].str() == "kmh";
         const double value = std::stod((*it)[1].str());
         if (value < 5 || value > 180) continue;
-        limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
-                          inherited_axis(static_cast<size_t>(&s - sentences.data()), AxisIn(before)), order++,
+        // "64 kmh (40 mph) on the north/south roadway and 40 kmh (25 mph) on
+        // the east/west roadway", "48 kmh on v1's roadway": the road named
+        // after the value is its road.
+        static const regex kOnRoadAfter(
+            R"(^\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:on|for|along)\s+(?:the\s+)?([^,;]{0,30}?)\s*(?:road|roadway|street|highway|approach)\b)");
+        static const regex kVehiclesRoad(R"(\bv([1-9])'s\b)");
+        smatch on, vm;
+        std::optional<int> axis = AxisIn(before);
+        int owner = owner_at(s, pos);
+        if (std::regex_search(tail, on, kOnRoadAfter)) {
+          const string named = on[1].str();
+          if (const auto a = AxisIn(named)) axis = a;
+          if (std::regex_search(named, vm, kVehiclesRoad)) owner = std::stoi(vm[1].str());
+        }
+        limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
+                          inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++,
                           ClauseRoad(s.text, pos)});
         found = true;
       }

@@ -1521,5 +1521,34 @@ TEST(NarrativeExtractorTest, StruckInTheBackJustAfterTurningOntoTheRoadIsATurnIn
   EXPECT_EQ(rear.crash.type.value, CrashType::kRearEnd);
 }
 
+TEST(NarrativeExtractorTest, RoadsNamedAfterTheirLimitsOneWayDirectionsAndCentreLanes) {
+  // The road named after a limit is that limit's road.
+  const auto after = kExtractor.Extract(
+      "The crash occurred at a four-leg intersection. The posted speed limit was 64 kmph (40 mph) on the "
+      "north/south roadway and 40 kmph (25 mph) on the east/west roadway. V1 was westbound and stopped at the stop "
+      "sign. V2 was northbound. The front of V2 struck the left side of V1.");
+  EXPECT_NEAR(after.road.speed_limit_mps.value * 3.6, 40.0, 0.5);
+  const auto own = kExtractor.Extract(
+      "V1 was eastbound approaching a T-intersection. The posted speed limit was 48 kmph (30 mph) on V1's roadway "
+      "and 72 kmph (45 mph) on the north/south roadway. V2 was southbound. The front of V2 struck the left side of "
+      "V1.");
+  EXPECT_NEAR(own.road.speed_limit_mps.value * 3.6, 48.0, 0.5);
+  // "the northbound roadway had 3 travel lanes" of a northbound one-way road: its total.
+  const auto one_way = kExtractor.Extract(
+      "The crash occurred in the intersection of a northbound one-way roadway and a westbound one-way roadway. The "
+      "northbound roadway had three travel lanes and the westbound roadway had a single travel lane. Vehicle # 1 was "
+      "traveling northbound in the middle lane. Vehicle # 2 was traveling westbound. The front of Vehicle # 1 "
+      "impacted the left side of Vehicle # 2.");
+  EXPECT_TRUE(one_way.road.one_way.value);
+  EXPECT_EQ(one_way.road.lanes_total.value, 3);
+  // The centre lane belongs to the road whose phrase names it.
+  const auto centre = kExtractor.Extract(
+      "The crash occurred at the intersection of a north/south two-way roadway with one lane in each direction and "
+      "an east/west two-way roadway with one lane in each direction and a center two-way left turn lane. Vehicle # 1 "
+      "was traveling southbound and stopped at the stop sign. Vehicle # 2 was traveling westbound. The front of "
+      "Vehicle # 2 contacted the left side of Vehicle # 1.");
+  EXPECT_EQ(centre.road.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
