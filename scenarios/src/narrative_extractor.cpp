@@ -529,7 +529,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
   static const regex kNoStop(
-      R"(\b(?:failed to|did not|didn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
+      R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
       R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
@@ -611,7 +611,9 @@ void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other
   static const regex kSelfLeft(R"(\bthis vehicle\b[^.]{0,40}?\bturning left)");
   static const regex kSelfRight(R"(\bthis vehicle\b[^.]{0,40}?\bturning right)");
   static const regex kSelfStraight(
-      R"(\bthis vehicle\b[^.]{0,40}?\b(?:crossing over|passing through|going straight|over the (?:left |right )?lane line|off the edge|control loss|traveling too fast|over the line))");
+      R"(\bthis vehicle\b[^.]{0,40}?\b(?:crossing over|passing through|going straight|over the (?:left |right )?lane line|off the edge|control loss|traveling too fast|over the line)|)"
+      // "... was when she began to travel over the lane line".
+      R"(\bwhen (?:he|she|it|the (?:driver|vehicle)|v[1-9])\s+(?:began|started) to (?:travel|drift|move|cross)\s+over the (?:left |right )?(?:lane|center|centre) ?line)");
   static const regex kSelfBack(R"(\bthis vehicle\b[^.]{0,40}?\bbacking)");
   static const regex kSelfLane(R"(\bthis vehicle\b[^.]{0,40}?\bchanging lanes)");
   static const regex kOtherStopped(R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,40}?\bstopped\b)");

@@ -1550,5 +1550,24 @@ TEST(NarrativeExtractorTest, RoadsNamedAfterTheirLimitsOneWayDirectionsAndCentre
   EXPECT_EQ(centre.road.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, HadNotComeToAStopAndTheCodedLaneLineCrossing) {
+  // "had braked ... but had not come to a stop": not stopped.
+  const auto braked = kExtractor.Extract(
+      "V2 was traveling west when its driver saw a deer and braked hard. V1 was traveling west behind V2. The front "
+      "of V1 struck the back of V2. The driver of V2 stated she had braked for the deer but had not come to a stop.");
+  ASSERT_EQ(braked.vehicles.size(), 2u);
+  EXPECT_NE(braked.vehicles[1].pre_event.value, Movement::kStopped);
+  // A lane change that is the vehicle's own critical event ("when she began to
+  // travel over the lane line") was preceded by going straight.
+  const auto lane = kExtractor.Extract(
+      "V1 was traveling westbound in lane one behind a slow truck. V2 was traveling westbound in lane two. The driver "
+      "of V1 began to change lanes to the left to pass the truck, and the left side of V1 contacted the right side of "
+      "V2. The Critical Precrash Event for the driver of V1 was when she began to travel over the lane line on the "
+      "left side of the travel lane.");
+  ASSERT_EQ(lane.vehicles.size(), 2u);
+  EXPECT_EQ(lane.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(lane.vehicles[0].movement.value, Movement::kChangingLanes);
+}
+
 }  // namespace
 }  // namespace accsim
