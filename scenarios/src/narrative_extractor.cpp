@@ -478,6 +478,7 @@ string Detail(const AreaWords& a) {
 
 struct RoadStatement {
   size_t sentence = 0;
+  size_t pos = 0;                  // where in the sentence
   int owner = 0;                   // vehicle whose segment states it (0: none)
   std::optional<int> axis;         // 0 = east-west, 1 = north-south, when the phrase names one
   int total = 0, per_direction = 0, directional = 0;
@@ -525,7 +526,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kStopState(
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(
-      R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went)\w*)");
+      R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
   static const regex kNoStop(
@@ -1460,6 +1461,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       auto add = [&](const smatch& m, size_t pos, int total, int per_dir, int directional) {
         RoadStatement rs;
         rs.sentence = i;
+        rs.pos = pos;
         rs.owner = owner_at(s, pos);
         const size_t from = pos > 60 ? pos - 60 : 0;
         const string around = s.text.substr(from, pos - from + static_cast<size_t>(m.length(0)) + 40);
@@ -1588,7 +1590,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (items >= 2) add(lm, first, sum, 0, 0);
       }
     }
-    std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) { return a.sentence < b.sentence; });
+    // In the order told: "a 2-lane road ... a 4-lane highway (2 lanes
+    // eastbound, 2 lanes westbound)" names the 2-lane road first.
+    std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) {
+      return a.sentence != b.sentence ? a.sentence < b.sentence : a.pos < b.pos;
+    });
     // V1's road: stated in V1's own segment, else the road on V1's axis, else
     // the first road not tied to another vehicle (the crash road is
     // described first).

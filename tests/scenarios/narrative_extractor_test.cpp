@@ -1569,5 +1569,17 @@ TEST(NarrativeExtractorTest, HadNotComeToAStopAndTheCodedLaneLineCrossing) {
   EXPECT_EQ(lane.vehicles[0].movement.value, Movement::kChangingLanes);
 }
 
+TEST(NarrativeExtractorTest, LaneStatementsInTheOrderToldAndStopThenAttempt) {
+  const auto r = kExtractor.Extract(
+      "Vehicle one (V1 - case vehicle) was traveling north in the northbound lane of a two-lane, two-way county road "
+      "and was approaching a four-leg intersection with a four-lane, two-way rural highway (two lanes eastbound, two "
+      "lanes westbound). Vehicle two (V2) was traveling west in the right westbound lane of the highway. The driver of "
+      "V1 stopped at the stop sign and then attempted to drive straight across the highway. The front of V2 struck "
+      "the right side of V1.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
