@@ -912,6 +912,16 @@ PlannedCrash TimeParameterise(const ImpactConfiguration& c, const LaneCombinatio
         p.impact.start_speed[i] = prof.v0;
       }
     }
+    // Slowing on a slippery road: it began from no faster than the surface
+    // lets it shed within the plan ("began to slow down" on ice).
+    const double shed = lim.decel * (T - 0.2) / 1.5;
+    if (prof.v0 > prof.v1 + shed) {
+      p.impact.description.notes.push_back(v.id + ": slows from " + Fmt("%.1f m/s", prof.v0) +
+                                           " beyond the surface's braking within the plan; starts at " +
+                                           Fmt("%.1f m/s", prof.v1 + shed));
+      prof.v0 = prof.v1 + shed;
+      p.impact.start_speed[i] = prof.v0;
+    }
     const double dv = std::abs(prof.v1 - prof.v0);
     const double a_lim = prof.v1 > prof.v0 ? lim.accel : lim.decel;
     prof.tau = std::clamp(std::max(1.5 * dv / a_lim, std::sqrt(6.0 * dv / lim.jerk)), 0.5, T - 0.2);

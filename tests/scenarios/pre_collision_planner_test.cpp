@@ -164,6 +164,20 @@ TEST(PreCollisionPlannerTest, Phase3SlowsAndPullsAwayWithinJerkLimits) {
   EXPECT_LE(p.peak_jerk, PlannerConfig{}.max_jerk + 1e-9);
 }
 
+TEST(PreCollisionPlannerTest, SlowingOnIceStartsNoFasterThanTheSurfaceCanShed) {
+  // A lead vehicle "began to slow down" on an icy road, its speed not stated:
+  // the drawn start speed is lowered to what ice lets it brake away.
+  auto d = Two(CrashType::kRearEnd, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kRear);
+  d.road.surface.Set(Surface::kIce, Provenance::kStated);
+  d.vehicles[1].movement.Set(Manoeuvre::kSlowing, Provenance::kStated);
+  d.vehicles[1].speed = {};
+  d.vehicles[0].speed = {};
+  const PlannedCrash p = PreCollisionPlanner().Plan(d, 0);
+  const Trajectory& v2 = p.trajectories[1];
+  EXPECT_GT(v2.Sample(0.0).v, v2.Sample(p.state.time).v);  // still slowing
+  EXPECT_LE(p.peak_accel, PlannerConfig{}.max_accel + 1e-9);
+}
+
 TEST(PreCollisionPlannerTest, ExtraVehiclesStayOutOfTheImpact) {
   auto d = Two(CrashType::kRearEnd, RoadType::kStraight, ImpactArea::kFront, ImpactArea::kRear);
   d.vehicles.push_back({});
