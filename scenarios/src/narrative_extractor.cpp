@@ -486,6 +486,7 @@ struct RoadStatement {
   bool cross = false;              // said of the cross street ("the cross street is a 2-lane road")
   bool ramp = false;               // said of a ramp ("a single-lane entrance ramp")
   bool centre = false;             // its phrase adds a centre lane ("... separated by a 2-way left-turn lane")
+  string name;                     // the named road its clause is about ("route 202 is ... with 1 lane each way")
 };
 
 std::optional<int> AxisIn(const string& s) {
@@ -772,6 +773,124 @@ string ClauseRoad(const string& s, size_t pos) {
   const string clause = s.substr(from, pos - from);
   return std::regex_search(clause, m, kFirst) ? m[1].str() : string();
 }
+
+// Roads the report names ("kessler lane", "route 202", "us 20"), found in
+// every sentence; "at linden" is Linden Street when one named road starts
+// with that word. A name told as a place ("at", "with", "onto" it) is not
+// what a clause is about; one at the clause's start or after "on" is.
+class RoadNames {
+ public:
+  explicit RoadNames(const std::vector<string>& texts) {
+    static const regex kNumbered(
+        R"(\b(?:us|sr|state route|state road|state highway|county road|county route|cr|tr|township road|route|rt|highway|interstate|fm|sh)[- ]?\d{1,4}\b|\bi-\d{1,3}\b)");
+    static const regex kWorded(
+        R"(\b([a-z][a-z']+)(?:\s+([a-z][a-z']+))?\s+(street|avenue|road|drive|lane|boulevard|parkway|pike|highway)\b)");
+    static const std::set<string> kNotAName = {
+        "a", "an", "the", "and", "or", "of", "on", "onto", "at", "to", "from", "in", "into", "with", "along", "down",
+        "up", "for", "by", "its", "his", "her", "their", "this", "that", "same", "other", "another", "each", "both",
+        "either", "which", "who", "was", "is", "were", "residential", "rural", "city", "county", "state", "side",
+        "cross", "private", "access", "service", "frontage", "local", "divided", "undivided", "paved", "gravel",
+        "dirt", "narrow", "wide", "straight", "curved", "curving", "main", "minor", "major", "urban", "suburban",
+        "country", "through", "collector", "arterial", "intersecting", "connecting", "oneway", "left", "right",
+        "curb", "turn", "travel", "center", "centre", "inside", "outside", "passing", "middle", "median", "bike",
+        "parking", "acceleration", "deceleration", "exit", "entrance", "merge", "shoulder", "opposing", "oncoming",
+        "adjacent", "opposite", "driving", "traffic", "same", "private", "public", "gravel", "dead", "end", "via",
+        "when", "as", "then", "but", "not", "no", "lanes", "lane", "road", "roadway", "street", "highway", "ramp",
+        "new", "old", "two", "one", "first", "second", "third", "near", "far", "hov", "bus", "emergency", "fast", "slow",
+        "way", "service", "access"};
+    auto ok_word = [&](const string& w) {
+      return !w.empty() && !kNotAName.count(w) && w.find("bound") == string::npos && w.find("'s") == string::npos;
+    };
+    for (const string& t : texts) {
+      for (auto it = std::sregex_iterator(t.begin(), t.end(), kNumbered); it != std::sregex_iterator(); ++it) {
+        Add(Canonical(it->str()), "");
+      }
+      for (auto it = std::sregex_iterator(t.begin(), t.end(), kWorded); it != std::sregex_iterator(); ++it) {
+        const smatch& m = *it;
+        const size_t at = static_cast<size_t>(m.position());
+        if (at > 0 && (t[at - 1] == '-' || std::isdigit(static_cast<unsigned char>(t[at - 1])))) continue;  // "2-way road"
+        const string w1 = m[1].str(), w2 = m[2].matched ? m[2].str() : string();
+        if (!ok_word(w1) || (!w2.empty() && !ok_word(w2))) {
+          if (w2.empty() || !ok_word(w2)) continue;
+          Add(w2 + " " + m[3].str(), w2);  // "the kessler lane" -> "kessler lane"
+          continue;
+        }
+        Add(m.str(), w1);
+      }
+    }
+    if (names_.empty()) return;
+    std::vector<string> alts;
+    for (const auto& [name, _] : names_) alts.push_back(name);
+    for (const auto& [alias, name] : aliases_) {
+      if (!alias_clash_.count(alias)) alts.push_back(alias);
+    }
+    std::sort(alts.begin(), alts.end(), [](const string& a, const string& b) { return a.size() > b.size(); });
+    string alt;
+    for (const auto& a : alts) {
+      string e = EscapeRegex(a);
+      for (size_t k = 0; (k = e.find(' ', k)) != string::npos; k += 5) e.replace(k, 1, "[- ]");
+      alt += (alt.empty() ? "" : "|") + e;
+    }
+    pattern_ = regex(R"(\b()" + alt + R"()\b)");
+  }
+
+  // The named road the clause around `pos` is about: the last name before
+  // `pos` that is not a place ("at linden", "with route 202").
+  string Subject(const string& t, size_t pos) const {
+    if (names_.empty()) return {};
+    static const regex kPlaceBefore(R"(\b(?:at|with|onto|to|toward|towards|into|past|near|from|across|crosses|crossing|meets|joins|of|and)\s+$)");
+    string found;
+    const string head = t.substr(0, std::min(pos, t.size()));
+    // "... with route 16, a 4-lane highway posted at 55 mph": a name the
+    // value's phrase stands in apposition to is its subject wherever it is.
+    static const regex kAppositive(R"(^\s*,\s*(?:a|an)\b[^,;]*$)");
+    for (auto it = std::sregex_iterator(head.begin(), head.end(), pattern_); it != std::sregex_iterator(); ++it) {
+      const size_t at = static_cast<size_t>(it->position());
+      const string before = head.substr(at > 20 ? at - 20 : 0, at > 20 ? 20 : at);
+      if (Has(before, kPlaceBefore) && !Has(head.substr(at + static_cast<size_t>(it->length())), kAppositive)) continue;
+      found = Resolve((*it)[1].str());
+    }
+    return found;
+  }
+
+  bool Mentioned(const string& t) const { return !names_.empty() && Has(t, pattern_); }
+
+  // The named road a vehicle's text puts it on ("was westbound on route 9").
+  string TravelledOn(const string& t) const {
+    if (names_.empty()) return {};
+    static const regex kTurnWords(R"(\b(?:intend\w*|to turn|turning|turned|turn|onto)\b)");
+    smatch tw;
+    const string head = std::regex_search(t, tw, kTurnWords) ? t.substr(0, static_cast<size_t>(tw.position())) : t;
+    static const regex kOnBefore(R"(\b(?:on|along|down|up|of)\s+(?:the\s+)?$)");
+    for (auto it = std::sregex_iterator(head.begin(), head.end(), pattern_); it != std::sregex_iterator(); ++it) {
+      const size_t at = static_cast<size_t>(it->position());
+      if (Has(head.substr(at > 15 ? at - 15 : 0, at > 15 ? 15 : at), kOnBefore)) return Resolve((*it)[1].str());
+    }
+    return {};
+  }
+
+ private:
+  static string Canonical(string n) {
+    std::replace(n.begin(), n.end(), '-', ' ');
+    return n;
+  }
+  void Add(const string& name, const string& alias) {
+    names_[name] = true;
+    if (alias.empty()) return;
+    auto [it, inserted] = aliases_.emplace(alias, name);
+    if (!inserted && it->second != name) alias_clash_.insert(alias);
+  }
+  string Resolve(const string& mention) const {
+    const string c = Canonical(mention);
+    if (names_.count(c)) return c;
+    const auto it = aliases_.find(mention);
+    return it == aliases_.end() ? c : it->second;
+  }
+  std::map<string, bool> names_;
+  std::map<string, string> aliases_;
+  std::set<string> alias_clash_;
+  regex pattern_;
+};
 
 // The road a vehicle's text puts it on ("was westbound on the side street").
 string RoadTravelledOn(const string& full) {
@@ -1418,6 +1537,31 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (axis || i == 0 || !Has(sentences[i].text, kAnaphoric)) return axis;
     return AxisIn(sentences[i - 1].text.substr(0, 40));
   };
+  // Named roads, and the one V1 is said to travel on.
+  std::vector<string> scene_texts;
+  for (const Sentence& s : sentences) {
+    if (s.kind == Kind::kNarrative || s.kind == Kind::kStatement) scene_texts.push_back(s.text);
+  }
+  const RoadNames road_names(scene_texts);
+  // The named road a clause is about; a sentence naming none and no
+  // vehicle ("route 9 is divided ...; the limit was 50") is about the road
+  // the sentence before began with.
+  auto named_at = [&](size_t i, size_t pos) {
+    string n = road_names.Subject(sentences[i].text, pos);
+    if (n.empty() && i > 0 && sentences[i].refs.empty() && !road_names.Mentioned(sentences[i].text)) {
+      n = road_names.Subject(sentences[i - 1].text, 40);
+    }
+    return n;
+  };
+  string v1_named_road;
+  for (const Segment& seg : segments) {
+    if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
+    // "v1 (...) and v2 were both westbound on route 9": the coordinated
+    // subject's predicate is the sentence's.
+    static const regex kCoordinatedEnd(R"(\band\s*$)");
+    const string& said = Has(seg.text, kCoordinatedEnd) ? sentences[seg.sentence].text : seg.text;
+    if (!(v1_named_road = road_names.TravelledOn(said)).empty()) break;
+  }
   // Which vehicle's segment a position in a sentence belongs to.
   auto owner_at = [&](const Sentence& s, size_t pos) {
     int owner = 0;
@@ -1511,6 +1655,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         smatch rw;
         if (std::regex_search(phrase_after, rw, kRoadWord)) phrase_after = phrase_after.substr(0, static_cast<size_t>(rw.position()));
         rs.centre = Has(s.text.substr(start, pos - start) + " " + phrase_after, kCentreLane);
+        rs.name = named_at(i, pos);
         rs.total = total;
         rs.per_direction = per_dir;
         rs.directional = directional;
@@ -1641,6 +1786,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       r.road.lanes_per_direction.Set(1, Provenance::kInferred);
     }
     if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
+    if (!best && v1_way <= 0 && !v1_named_road.empty()) {
+      best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.name == v1_named_road; });
+    }
     if (!best && v1_way <= 0 && v1_axis >= 0) {
       best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == v1_axis; });
     }
@@ -1865,10 +2013,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       std::optional<int> axis;
       size_t order;
       string road;  // the road its clause is about ("the side street is ..., posted at 30 mph")
+      string name;  // the named road its clause is about ("route 202 ... a 50 mph limit")
     };
     std::vector<Limit> limits;
     static const regex kValue(R"(\b(\d{2,3})(?:\s*|-)(kmh|mph)\b)");  // "45 mph", "a 45-mph zone"
-    static const regex kBare(R"(\b(?:speed limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet)))");
+    static const regex kBare(R"(\b(?:speed limit|limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet)))");
     static const regex kAdvisory(R"((?:advisory|suggested|recommended|warning|curve)[^.]{0,25}$)");
     size_t order = 0;
     for (const Sentence& s : sentences) {
@@ -1893,7 +2042,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (Has(before.substr(before.size() > 40 ? before.size() - 40 : 0), kAdvisory)) continue;
         if (before.find("limit") == string::npos && before.find("posted") == string::npos &&
             before.find("speed zone") == string::npos && tail.find("limit") == string::npos &&
-            tail.find("posted") == string::npos && tail.rfind(" zone", 0) != 0) {  // "a 45 mph zone"
+            tail.find("posted") == string::npos && tail.rfind(" zone", 0) != 0 &&
+            tail.rfind(" speed zone", 0) != 0) {  // "a 45 mph zone", "a 25 mph speed zone"
           continue;
         }
         const bool kmh = (*it)[2].str() == "kmh";
@@ -1915,14 +2065,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
                           inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++,
-                          ClauseRoad(s.text, pos)});
+                          ClauseRoad(s.text, pos), named_at(static_cast<size_t>(&s - sentences.data()), pos)});
         found = true;
       }
       smatch m;
       if (!found && std::regex_search(s.text, m, kBare)) {
-        limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, static_cast<size_t>(m.position())),
-                          AxisIn(s.text.substr(0, static_cast<size_t>(m.position()))), order++,
-                          ClauseRoad(s.text, static_cast<size_t>(m.position()))});
+        const size_t at = static_cast<size_t>(m.position());
+        limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, at),
+                          inherited_axis(static_cast<size_t>(&s - sentences.data()), AxisIn(s.text.substr(0, at))),
+                          order++, ClauseRoad(s.text, at), named_at(static_cast<size_t>(&s - sentences.data()), at)});
       }
     }
     // No limit word anywhere: a value that describes the road itself ("a
@@ -1946,7 +2097,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const bool kmh = m[2].str() == "kmh";
         if (value < 5 || value > 180) continue;
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, pos),
-                          AxisIn(s.text.substr(0, pos)), order++, ClauseRoad(s.text, pos)});
+                          AxisIn(s.text.substr(0, pos)), order++, ClauseRoad(s.text, pos),
+                          road_names.Subject(s.text, pos)});
         break;
       }
     }
@@ -1965,7 +2117,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (!(v1_road = RoadTravelledOn(seg.text)).empty()) break;
     }
     const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
+    if (std::getenv("ACCSIM_DEBUG_ROADS")) {
+      std::fprintf(stderr, "[v1 named road: %s]\n", v1_named_road.c_str());
+      for (const auto& l : limits) {
+        std::fprintf(stderr, "[limit %.1f kmh owner%d axis%d road '%s' name '%s']\n", l.mps * 3.6, l.owner,
+                     l.axis ? *l.axis : -1, l.road.c_str(), l.name.c_str());
+      }
+    }
     const Limit* pick = first_limit([](const Limit& l) { return l.owner == 1; });
+    if (!pick && !v1_named_road.empty()) {
+      pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.name == v1_named_road; });
+    }
     if (!pick && distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.road == v1_road; });
     if (!pick && v1_axis >= 0) {
       pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.axis && *l.axis == v1_axis; });

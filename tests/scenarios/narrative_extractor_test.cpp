@@ -1581,5 +1581,36 @@ TEST(NarrativeExtractorTest, LaneStatementsInTheOrderToldAndStopThenAttempt) {
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, NamedRoadsGiveV1ItsLanesAndLimit) {
+  // V1 on Tower Road: the road named, not the highway described first.
+  const auto tower = kExtractor.Extract(
+      "The crash occurred on US-41 at its intersection with Tower Road. US-41 is a four-lane divided highway with two "
+      "eastbound and two westbound lanes. The posted speed on US-41 is 55 mph. Tower Road is a two-lane, two-way road "
+      "posted at 30 mph. V1 was northbound on Tower Road and stopped at the stop sign. V2 was eastbound on US-41. The "
+      "front of V2 struck the left side of V1.");
+  EXPECT_EQ(tower.road.lanes_total.value, 2);
+  EXPECT_NEAR(tower.road.speed_limit_mps.value * 3.6, 48.3, 0.5);
+  // "Kessler Lane, a two-lane road with a 25 mph speed zone": a limit; the
+  // route named after "with" is a place, not the clause's road.
+  const auto kessler = kExtractor.Extract(
+      "Kessler Lane, a two-lane road with a 25 mph speed zone, runs east to a T-intersection with Route 202. Route "
+      "202 is a north-south highway with one lane in each direction and a 50 mph limit. V1 was eastbound on Kessler "
+      "Lane. V2 was southbound on Route 202. The front of V2 struck the left side of V1.");
+  EXPECT_NEAR(kessler.road.speed_limit_mps.value * 3.6, 40.2, 0.5);
+  // "V1 and V2 were both westbound on Route 9"; "...; the limit was 50" is Route 9's.
+  const auto route9 = kExtractor.Extract(
+      "V1 (2003 Kia Optima) and V2 (1995 Volvo 850) were both westbound on Route 9 in the left lane. Route 9 is "
+      "divided by a concrete barrier and has two lanes in each direction; the limit was 50. Both vehicles had been "
+      "stopped for the red signal at Tilden Avenue, a two-lane street with a 25 mph limit. The front of V1 struck "
+      "the back of V2.");
+  EXPECT_NEAR(route9.road.speed_limit_mps.value * 3.6, 80.5, 0.5);
+  // "a 2-way road" names no road.
+  const auto unnamed = kExtractor.Extract(
+      "Harper Road is an east-west, two-lane, two-way road posted at 45 mph. The crash occurred at a driveway east of "
+      "Harper's intersection with Route 16, a four-lane highway posted at 55 mph. V1 stopped at the edge of Harper "
+      "Road and then started a left turn. V2 was eastbound on Harper. The front of V2 struck the left side of V1.");
+  EXPECT_NEAR(unnamed.road.speed_limit_mps.value * 3.6, 72.4, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
