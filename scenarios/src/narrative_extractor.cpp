@@ -861,7 +861,7 @@ class RoadNames {
     static const regex kTurnWords(R"(\b(?:intend\w*|to turn|turning|turned|turn|onto)\b)");
     smatch tw;
     const string head = std::regex_search(t, tw, kTurnWords) ? t.substr(0, static_cast<size_t>(tw.position())) : t;
-    static const regex kOnBefore(R"(\b(?:on|along|down|up|of)\s+(?:the\s+)?$)");
+    static const regex kOnBefore(R"(\b(?:on|along|down|up)\s+(?:the\s+)?$)");
     for (auto it = std::sregex_iterator(head.begin(), head.end(), pattern_); it != std::sregex_iterator(); ++it) {
       const size_t at = static_cast<size_t>(it->position());
       if (Has(head.substr(at > 15 ? at - 15 : 0, at > 15 ? 15 : at), kOnBefore)) return Resolve((*it)[1].str());
