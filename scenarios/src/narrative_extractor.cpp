@@ -1915,7 +1915,26 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           !Has(std::regex_replace(s.text, kMedianPlace, " "), kDivided)) {
         continue;
       }
-      const std::optional<int> axis = AxisIn(s.text);
+      // The axis of the phrase that says it ("a north/south divided highway
+      // and an east/west county road": the highway's), else the sentence's.
+      std::optional<int> axis;
+      {
+        const string cleaned = std::regex_replace(s.text, kMedianPlace, " ");
+        smatch dm;
+        std::regex_search(cleaned, dm, kDivided);
+        const size_t at = static_cast<size_t>(dm.position());
+        static const regex kNextRoadPhrase(R"(\band\s+(?:a|an|the)\s+)");
+        size_t from = 0;
+        const string upto = cleaned.substr(0, at);
+        for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kNextRoadPhrase); it != std::sregex_iterator(); ++it) {
+          from = static_cast<size_t>(it->position());
+        }
+        string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);
+        const size_t next = phrase.find(" and ", at - from + static_cast<size_t>(dm.length()));
+        if (next != string::npos) phrase = phrase.substr(0, next);
+        axis = AxisIn(phrase);
+        if (!axis) axis = AxisIn(s.text);
+      }
       if (at_junction && v1_axis >= 0 && axis && *axis != v1_axis) continue;
       static const regex kRest(R"(\b(?:came to (?:its |their )?(?:final )?rest|final rest|rest(?:ed|ing)? against)\b)");
       if (Has(s.text, kRest)) continue;  // "came to rest against the median curb"

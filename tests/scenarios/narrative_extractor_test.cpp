@@ -1612,5 +1612,15 @@ TEST(NarrativeExtractorTest, NamedRoadsGiveV1ItsLanesAndLimit) {
   EXPECT_NEAR(unnamed.road.speed_limit_mps.value * 3.6, 72.4, 0.5);
 }
 
+TEST(NarrativeExtractorTest, DividedSaidOfTheOtherRoadsPhrase) {
+  const auto r = kExtractor.Extract(
+      "This crash occurred at a rural four-leg intersection of a north/south divided highway and an east/west county "
+      "road. The county road was a two-lane, two-way roadway with a posted speed limit of 55 mph. Vehicle #1 was "
+      "traveling east on the county road and stopped at the stop sign. Vehicle #2 was traveling south. The front of "
+      "Vehicle #2 struck the left side of Vehicle #1.");
+  EXPECT_FALSE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
