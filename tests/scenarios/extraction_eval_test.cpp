@@ -48,7 +48,7 @@ TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
                    {"collision_location", 0.97}, {"driving_actions", 0.95}, {"crash_type", 0.97}});
 }
 
-// Invented reports in the NMVCCS researchers' own style, seven sets by seven
+// Invented reports in the NMVCCS researchers' own style, eight sets by eight
 // hands, labelled in NASS terms without reading the rules; each was first
 // scored after the fixes for the sets before it (docs/extraction.md gives
 // every first look). Set A's labeller codes a turner or a lane changer by its
@@ -82,6 +82,9 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
         {"collision_location", 0.95}, {"driving_actions", 0.84}, {"crash_type", 0.92}}},
       {"nmvccs_style_g", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+        {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.92}}},
+      {"nmvccs_style_i", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.92}}},
   };
   for (const Set& set : sets) {
