@@ -443,6 +443,19 @@ std::optional<Compass> DirectionIn(const string& s) {
   return lane_direction;
 }
 
+// Where the road phrase holding `pos` starts: after the previous road's
+// (", and a ..."), however far back ("the north/south roadway, which formed
+// the south leg of the intersection, was a 2-lane ...").
+size_t RoadPhraseStart(const string& s, size_t pos) {
+  static const regex kNextRoad(R"(\band\s+(?:a|an|the)\s+)");
+  size_t start = 0;
+  const string upto = s.substr(0, std::min(pos, s.size()));
+  for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kNextRoad); it != std::sregex_iterator(); ++it) {
+    start = static_cast<size_t>(it->position());
+  }
+  return start;
+}
+
 bool Opposite(Compass a, Compass b) { return (static_cast<int>(a) + 2) % 4 == static_cast<int>(b); }
 bool Perpendicular(Compass a, Compass b) { return (static_cast<int>(a) + static_cast<int>(b)) % 2 == 1; }
 
@@ -777,6 +790,14 @@ string ClauseRoad(const string& s, size_t pos) {
   return std::regex_search(clause, m, kFirst) ? m[1].str() : string();
 }
 
+// A vehicle's text up to any turn or intention: the road it turns onto is
+// not the one it travelled on.
+string BeforeTheTurn(const string& t) {
+  static const regex kTurnWords(R"(\b(?:intend\w*|to turn|turning|turned|turn|onto)\b)");
+  smatch tw;
+  return std::regex_search(t, tw, kTurnWords) ? t.substr(0, static_cast<size_t>(tw.position())) : t;
+}
+
 // Roads the report names ("kessler lane", "route 202", "us 20"), found in
 // every sentence; "at linden" is Linden Street when one named road starts
 // with that word. A name told as a place ("at", "with", "onto" it) is not
@@ -861,9 +882,7 @@ class RoadNames {
   // The named road a vehicle's text puts it on ("was westbound on route 9").
   string TravelledOn(const string& t) const {
     if (names_.empty()) return {};
-    static const regex kTurnWords(R"(\b(?:intend\w*|to turn|turning|turned|turn|onto)\b)");
-    smatch tw;
-    const string head = std::regex_search(t, tw, kTurnWords) ? t.substr(0, static_cast<size_t>(tw.position())) : t;
+    const string head = BeforeTheTurn(t);
     static const regex kOnBefore(R"(\b(?:on|along|down|up)\s+(?:the\s+)?$)");
     for (auto it = std::sregex_iterator(head.begin(), head.end(), pattern_); it != std::sregex_iterator(); ++it) {
       const size_t at = static_cast<size_t>(it->position());
@@ -897,9 +916,7 @@ class RoadNames {
 
 // The road a vehicle's text puts it on ("was westbound on the side street").
 string RoadTravelledOn(const string& full) {
-  static const regex kTurnWords(R"(\b(?:intend\w*|to turn|turning|turned|turn|onto)\b)");
-  smatch tw;
-  const string t = std::regex_search(full, tw, kTurnWords) ? full.substr(0, static_cast<size_t>(tw.position())) : full;
+  const string t = BeforeTheTurn(full);
   static const regex kOn(R"(\b(?:on|along|down|up|from|onto)\s+the\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   return std::regex_search(t, m, kOn) ? m[1].str() : string();
@@ -1616,15 +1633,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // two lanes each way"), else after it ("a 4-lane road running
         // north-south"); the next road's ("..., and a northbound one-way")
         // is not this one's.
-        // A road's phrase starts after the previous road's (", and a ..."),
-        // however far back ("the north/south roadway, which formed the south
-        // leg of the intersection, was a 2-lane ...").
-        static const regex kNextRoad(R"(\band\s+(?:a|an|the)\s+)");
-        size_t start = 0;
-        const string upto = s.text.substr(0, pos);
-        for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kNextRoad); it != std::sregex_iterator(); ++it) {
-          start = static_cast<size_t>(it->position());
-        }
+        const size_t start = RoadPhraseStart(s.text, pos);
         rs.axis = AxisIn(s.text.substr(start, pos - start + static_cast<size_t>(m.length(0))));
         if (!rs.axis) rs.axis = AxisIn(around);
         rs.axis = inherited_axis(i, rs.axis);
@@ -1926,12 +1935,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         smatch dm;
         std::regex_search(cleaned, dm, kDivided);
         const size_t at = static_cast<size_t>(dm.position());
-        static const regex kNextRoadPhrase(R"(\band\s+(?:a|an|the)\s+)");
-        size_t from = 0;
-        const string upto = cleaned.substr(0, at);
-        for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kNextRoadPhrase); it != std::sregex_iterator(); ++it) {
-          from = static_cast<size_t>(it->position());
-        }
+        const size_t from = RoadPhraseStart(cleaned, at);
         string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);
         const size_t next = phrase.find(" and ", at - from + static_cast<size_t>(dm.length()));
         if (next != string::npos) phrase = phrase.substr(0, next);
