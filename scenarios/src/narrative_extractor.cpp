@@ -2429,7 +2429,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     auto pulls_out_of_parking = [&](const VehicleRecord* v) {
       const size_t k = static_cast<size_t>(std::stoi(v->id.substr(1)));
-      return k < narrative.size() && (narrative[k].leaving_parking || LeftParking(narrative[k])) && !Turning(v->movement.value);
+      // Also when it meant to turn around ("pulled out of the parking space
+      // and attempted to make a U-turn"): NASS 72/73 still.
+      return k < narrative.size() && (narrative[k].leaving_parking || LeftParking(narrative[k])) &&
+             (!Turning(v->movement.value) || narrative[k].u_turn);
     };
     static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
     // Front corners count as fronts here: investigators code "the front left

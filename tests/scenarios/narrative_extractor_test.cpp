@@ -1631,5 +1631,14 @@ TEST(NarrativeExtractorTest, APassIsPrecededByGoingStraight) {
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, AUTurnOutOfAParkingSpaceIsATurnAcrossPath) {
+  const auto r = kExtractor.Extract(
+      "Vehicle # 1 was a 1995 Lincoln Town Car that was parked in the eastbound parking lane. Vehicle # 2 was a 2003 "
+      "Chevrolet Trailblazer that was traveling eastbound in the eastbound lane. Vehicle # 1 pulled out of the "
+      "parking space and attempted to make a U-turn to go westbound, and the front of Vehicle # 2 impacted the left "
+      "side of Vehicle # 1.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 }  // namespace
 }  // namespace accsim
