@@ -391,7 +391,9 @@ string WithoutDistantJunctions(const string& s) {
   static const regex kDistant(
       R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b|\b(?:away from|not near|nowhere near|far from)\s+(?:any|an?|the)\s+[^.;,]{0,40})"
       // "the nearest ramp was about 700 meters away".
-      R"(|\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50})");
+      // "having entered by way of an exit ramp approximately 5 km to the east".
+      R"(|\b(?:ramp|interchange)\s+(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:km|kilometers?|kilometres?|mi|miles?|m|meters?|metres?|ft|feet)\b[^.;]{0,25}|)"
+      R"(\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50})");
   return std::regex_replace(s, kDistant, " ");
 }
 
@@ -555,7 +557,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kIntention(
       R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn))");
   static const regex kLaneChange(
-      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|make|enter|exit|pass|go around)\b|\b(?:moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
@@ -695,17 +697,17 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // A stop before the critical event is the pre-crash movement even when a
   // turn was intended afterwards (how NASS codes it).
   if (e.stopped && !e.started) return both(Movement::kStopped, Provenance::kStated);
-  // A lane change or a pass that is itself the vehicle's coded critical
-  // event ("this vehicle traveling over the lane line") was preceded by
-  // driving on: NASS codes that as the pre-event movement, as for turns.
-  auto own_event = [&](Movement m) {
-    return n.coded_straight ? MovementDecision{m, Movement::kStraight, Provenance::kStated} : both(m, Provenance::kStated);
-  };
-  if (e.lane_change || n.coded_lane_change) return own_event(Movement::kChangingLanes);
+  // A lane change that is itself the vehicle's coded critical event ("this
+  // vehicle traveling over the lane line") was preceded by driving on:
+  // NASS codes that as the pre-event movement, as for turns.
+  if (e.lane_change || n.coded_lane_change) {
+    const Movement before = n.coded_straight ? Movement::kStraight : Movement::kChangingLanes;
+    return MovementDecision{Movement::kChangingLanes, before, Provenance::kStated};
+  }
   if (e.merge) return both(Movement::kMerging, Provenance::kStated);
-  // A pass is coded by what the vehicle was doing, going straight: none of
-  // the development set's 150 vehicles is coded passing, the overtaker of
-  // crossing/21 going straight.
+  // A pass is preceded by going straight, coded or not: none of the 150
+  // development vehicles is coded passing, the overtaker of crossing/21 is
+  // coded going straight.
   if (e.pass) return MovementDecision{Movement::kPassing, Movement::kStraight, Provenance::kStated};
   if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
   if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
@@ -1086,7 +1088,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
 
   // ---- The impact: the first sentence with a contact verb between two vehicles.
   static const regex kContact(
-      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed)\b)");
+      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged)\b)");
   size_t impact = sentences.size();
   for (int pass = 0; pass < 3 && impact == sentences.size(); ++pass) {
     for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1208,7 +1210,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     bool perceived = false;  // what another driver saw this vehicle do
   };
   static const regex kSubjectBefore(
-      R"((?:^|[,:(.]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time|stated|said|reported|indicated|advised|claimed|explained|admitted|recalled))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
+      R"((?:^|[,:(.]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time|stated|said|reported|indicated|advised|claimed|explained|admitted|recalled|signal|light|arrow|sign|time|point|moment|curve|crest))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
   // "behind v2, a jetta, which was stopped", and appositives "v2, a parked
   // and unoccupied ciera": both describe that vehicle.
   static const regex kRelativeAfter(
@@ -1222,7 +1224,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
   std::vector<Segment> segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -1290,9 +1292,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kOwnAppositive(R"(^v[1-9]\s*,\s*an?\s+[^,;]{0,60},)");
       smatch own;
       if (skip > 0 && std::regex_search(t, own, kOwnAppositive)) skip = static_cast<size_t>(own.length(0));
-      smatch m;
-      if (std::regex_search(t.cbegin() + static_cast<std::ptrdiff_t>(skip), t.cend(), m, kOtherVehicle)) {
-        t = t.substr(0, static_cast<size_t>(m.position()) + skip);
+      // What it tows is its own ("a 2004 mack tractor pulling a flatbed
+      // semi-trailer was traveling south").
+      static const regex kTowing(R"(\b(?:pulling|towing|hauling)\s+$)");
+      for (auto it = std::sregex_iterator(t.cbegin() + static_cast<std::ptrdiff_t>(skip), t.cend(), kOtherVehicle);
+           it != std::sregex_iterator(); ++it) {
+        const size_t at = static_cast<size_t>(it->position()) + skip;
+        if (Has(t.substr(at > 20 ? at - 20 : 0, at > 20 ? 20 : at), kTowing)) continue;
+        t = t.substr(0, at);
+        break;
       }
       return t;
     };

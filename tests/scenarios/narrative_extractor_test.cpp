@@ -1640,5 +1640,35 @@ TEST(NarrativeExtractorTest, AUTurnOutOfAParkingSpaceIsATurnAcrossPath) {
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, CirenWordingsOfTurnsContactsAndTows) {
+  // "...controlled by traffic signals, waiting to turn left" keeps its
+  // intention (traffic signals are not traffic); "On a circular green signal
+  // the driver of the Mazda began the turn" is the Mazda's sentence.
+  const auto turn = kExtractor.Extract(
+      "The case vehicle (V1), a 2001 Mazda Protege, was northbound and had stopped in the left-turn lane at an "
+      "intersection controlled by traffic signals, waiting to turn left and travel west. V2, a 2005 GMC Yukon, was "
+      "southbound in the inside through lane. On a circular green signal the driver of the Mazda began the turn "
+      "across the southbound lanes and the front of the Yukon struck the right side of the Mazda.");
+  EXPECT_EQ(turn.crash.type.value, CrashType::kTurnAcrossPath);
+  ASSERT_EQ(turn.vehicles.size(), 2u);
+  EXPECT_EQ(turn.vehicles[0].movement.value, Movement::kTurnLeft);
+  // "engaged" is a contact; "moved to the right to reach an upcoming exit"
+  // a lane change; what a tractor is pulling is its own.
+  const auto engaged = kExtractor.Extract(
+      "Vehicle one (V1), a 2005 Chrysler 300, was traveling south in the center southbound lane of a six-lane freeway. "
+      "Vehicle two (V2), a 2004 Mack tractor pulling a flatbed semi-trailer was traveling south in the right "
+      "southbound lane. The driver of V1 moved to the right to reach an upcoming exit and did not see V2. The left "
+      "front corner of the Mack's tractor engaged the right rear quarter of the Chrysler.");
+  EXPECT_EQ(engaged.crash.type.value, CrashType::kSideswipeSame);
+  ASSERT_EQ(engaged.vehicles.size(), 2u);
+  EXPECT_EQ(engaged.vehicles[1].travel.value, Compass::kSouth);
+  // "an exit ramp approximately 5 km to the east" is not where it crashed.
+  const auto wrong_way = kExtractor.Extract(
+      "V1 was eastbound in the left lane of a divided interstate highway. V2 was traveling west in the left eastbound "
+      "lane, the wrong way, having entered the interstate by way of an exit ramp approximately 5 km to the east. The "
+      "front of V2 struck the front of V1.");
+  EXPECT_EQ(wrong_way.crash.location.value, CrashLocation::kSegment);
+}
+
 }  // namespace
 }  // namespace accsim
