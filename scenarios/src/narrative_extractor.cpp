@@ -1921,36 +1921,37 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (const auto& rs : roads) {
         if (rs.sentence != k) continue;
         counted = true;
-        const bool same = rs.sentence <= best->sentence + 1 && !(rs.axis && best->axis && rs.axis != best->axis);
+        // The same road: on the same axis, or near it with no axis to tell.
+        const bool same = (rs.axis && best->axis) ? *rs.axis == *best->axis : rs.sentence <= best->sentence + 1;
         if (same) return false;
       }
       return counted;
     };
-    bool divided = false;
+    // "a median crossover", "stopped in the median": the other road's median.
+    static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
+    // Whether a sentence says `word` of V1's road: not of a road across V1's
+    // course at a junction, judged by the axis of the phrase that says it ("a
+    // north/south divided highway and an east/west county road": the
+    // highway's), else the sentence's; not in another road's lane count.
+    auto says_of_v1s_road = [&](const Sentence& s, const regex& word) {
+      if (other_roads_sentence(static_cast<size_t>(&s - sentences.data()))) return false;
+      if (s.kind != Kind::kNarrative && s.kind != Kind::kStatement) return false;
+      const string cleaned = std::regex_replace(s.text, kMedianPlace, " ");
+      smatch dm;
+      if (!std::regex_search(cleaned, dm, word)) return false;
+      const size_t at = static_cast<size_t>(dm.position());
+      const size_t from = RoadPhraseStart(cleaned, at);
+      string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);
+      const size_t next = phrase.find(" and ", at - from + static_cast<size_t>(dm.length()));
+      if (next != string::npos) phrase = phrase.substr(0, next);
+      std::optional<int> axis = AxisIn(phrase);
+      if (!axis) axis = AxisIn(s.text);
+      return !(at_junction && v1_axis >= 0 && axis && *axis != v1_axis);
+    };
+    bool divided = false, undivided = false;
     for (const Sentence& s : sentences) {
-      if (other_roads_sentence(static_cast<size_t>(&s - sentences.data()))) continue;
-      // "a median crossover", "stopped in the median": the other road's median.
-      static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
-      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) ||
-          !Has(std::regex_replace(s.text, kMedianPlace, " "), kDivided)) {
-        continue;
-      }
-      // The axis of the phrase that says it ("a north/south divided highway
-      // and an east/west county road": the highway's), else the sentence's.
-      std::optional<int> axis;
-      {
-        const string cleaned = std::regex_replace(s.text, kMedianPlace, " ");
-        smatch dm;
-        std::regex_search(cleaned, dm, kDivided);
-        const size_t at = static_cast<size_t>(dm.position());
-        const size_t from = RoadPhraseStart(cleaned, at);
-        string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);
-        const size_t next = phrase.find(" and ", at - from + static_cast<size_t>(dm.length()));
-        if (next != string::npos) phrase = phrase.substr(0, next);
-        axis = AxisIn(phrase);
-        if (!axis) axis = AxisIn(s.text);
-      }
-      if (at_junction && v1_axis >= 0 && axis && *axis != v1_axis) continue;
+      if (says_of_v1s_road(s, kUndivided)) undivided = true;
+      if (!says_of_v1s_road(s, kDivided)) continue;
       static const regex kRest(R"(\b(?:came to (?:its |their )?(?:final )?rest|final rest|rest(?:ed|ing)? against)\b)");
       if (Has(s.text, kRest)) continue;  // "came to rest against the median curb"
       // In a sentence about a vehicle, a median is where it went ("stopped
@@ -1960,7 +1961,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (!s.refs.empty() && !Has(s.text, kSaysDivided)) continue;
       divided = true;
     }
-    if (Has(scene, kUndivided)) r.road.divided.Set(false, Provenance::kStated);
+    if (undivided) r.road.divided.Set(false, Provenance::kStated);
     else if (divided) r.road.divided.Set(true, Provenance::kStated);
     // A divided road whose lanes the report does not count carries more than
     // one lane each way as a rule.

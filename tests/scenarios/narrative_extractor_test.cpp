@@ -1670,5 +1670,18 @@ TEST(NarrativeExtractorTest, CirenWordingsOfTurnsContactsAndTows) {
   EXPECT_EQ(wrong_way.crash.location.value, CrashLocation::kSegment);
 }
 
+TEST(NarrativeExtractorTest, UndividedSaidOfTheCrossRoadAndV1sRoadDescribedLater) {
+  // V1's east/west road, described after the vehicles, is divided; the
+  // north/south road's "undivided" is not about it.
+  const auto r = kExtractor.Extract(
+      "Vehicle 1, a 2007 Ford Fusion, was westbound in lane two, the middle of three westbound lanes, approaching a "
+      "four-leg intersection on a green signal. Vehicle 2 was northbound. The front of Vehicle 2 struck the left side "
+      "of Vehicle 1. Vehicle 1 came to rest facing south. The east/west road was a divided roadway with a 6-meter "
+      "raised median and three travel lanes in each direction. The north/south road was a two-lane, two-way "
+      "undivided road posted at 56 km/h.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 3);
+}
+
 }  // namespace
 }  // namespace accsim
