@@ -929,7 +929,7 @@ bool LeavesDriveway(const string& t) {
   static const regex kFromDriveway(
       R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b|)"
       // "stopped at the mouth of the driveway", "drove south through the exit driveway".
-      R"(\b(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
+      R"(\b(?:stopped|waiting|sitting|sat|paused|idling|was|were|emerged|emerging)\s+(?:[\w-]+\s+){0,2}?(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
       R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b|)"
       // "was westbound in the driveway".
       R"(\b(?:was|were) (?:[\w-]+ ){0,2}?(?:in|on|within) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley|parking lot)\b|)"
@@ -1602,9 +1602,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
         R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
-    // "each direction of route 30 has 2 through lanes plus a left-turn bay".
+    // "each direction of route 30 has 2 through lanes plus a left-turn bay",
+    // "a grass median and, in each direction, 2 through lanes and a left-turn lane".
     static const regex kEachHas(
-        R"(\beach direction\b[^.;]{0,30}?\bhas\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
+        R"((?:\beach direction\b[^.;]{0,30}?\bhas|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(

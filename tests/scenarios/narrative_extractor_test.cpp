@@ -1683,5 +1683,20 @@ TEST(NarrativeExtractorTest, UndividedSaidOfTheCrossRoadAndV1sRoadDescribedLater
   EXPECT_EQ(r.road.lanes_per_direction.value, 3);
 }
 
+TEST(NarrativeExtractorTest, EachDirectionFirstAndAStrikeAtTheMouthOfADrive) {
+  // "and, in each direction, 2 through lanes and a left-turn lane": 3 each way.
+  const auto each = kExtractor.Extract(
+      "Vehicle 1 was northbound in lane one of a divided roadway. Vehicle 2 was southbound and turned left. The front "
+      "of Vehicle 1 struck the right side of Vehicle 2. The divided roadway had a grass median and, in each "
+      "direction, two through lanes and a left-turn lane at the intersection.");
+  EXPECT_EQ(each.road.lanes_per_direction.value, 3);
+  // V1 striking a vehicle "at the mouth of the driveway" was not on the drive.
+  const auto mouth = kExtractor.Extract(
+      "This crash occurred in the eastbound lanes of a four-lane, two-way, undivided roadway with two lanes in each "
+      "direction. Vehicle #2 was eastbound and beginning to turn right into a driveway. Vehicle #1 was eastbound "
+      "behind it. The front of Vehicle #1 struck the back of Vehicle #2 at the mouth of the driveway.");
+  EXPECT_EQ(mouth.road.lanes_total.value, 4);
+}
+
 }  // namespace
 }  // namespace accsim
