@@ -2284,14 +2284,27 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       const AreaWords a = ParseArea(words);
       if (v > 0 && a.any() && !area_words.count(v)) area_words[v] = a;
     };
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), kOfV); it != std::sregex_iterator(); ++it) {
-      note(std::stoi((*it)[2].str()), (*it)[1].str());
+    // The clause of the contact first: "the rear of v1 slid out and it
+    // rotated into the eastbound lane, where the front of v2 struck the right
+    // side of v1" names v1's struck side after "where".
+    static const regex kClauseStart(R"(\b(?:where|whereupon)\b|;)");
+    size_t clause = 0;
+    {
+      const string upto = s.substr(0, std::min(verb_pos, s.size()));
+      for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kClauseStart); it != std::sregex_iterator(); ++it) {
+        clause = static_cast<size_t>(it->position());
+      }
     }
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), kVs); it != std::sregex_iterator(); ++it) {
-      note(std::stoi((*it)[1].str()), (*it)[2].str());
-    }
-    for (auto it = std::sregex_iterator(s.begin(), s.end(), kVOn); it != std::sregex_iterator(); ++it) {
-      note(std::stoi((*it)[1].str()), (*it)[2].str());
+    for (const string& part : {s.substr(clause), s}) {
+      for (auto it = std::sregex_iterator(part.begin(), part.end(), kOfV); it != std::sregex_iterator(); ++it) {
+        note(std::stoi((*it)[2].str()), (*it)[1].str());
+      }
+      for (auto it = std::sregex_iterator(part.begin(), part.end(), kVs); it != std::sregex_iterator(); ++it) {
+        note(std::stoi((*it)[1].str()), (*it)[2].str());
+      }
+      for (auto it = std::sregex_iterator(part.begin(), part.end(), kVOn); it != std::sregex_iterator(); ++it) {
+        note(std::stoi((*it)[1].str()), (*it)[2].str());
+      }
     }
     smatch am;
     if (std::regex_search(s, am, kWithIts)) note(striker, am[1].str());

@@ -1698,5 +1698,15 @@ TEST(NarrativeExtractorTest, EachDirectionFirstAndAStrikeAtTheMouthOfADrive) {
   EXPECT_EQ(mouth.road.lanes_total.value, 4);
 }
 
+TEST(NarrativeExtractorTest, TheContactsClauseNamesTheStruckArea) {
+  const auto r = kExtractor.Extract(
+      "Vehicle #1, a 1998 Acura Integra, was westbound negotiating the curve. Vehicle #2, a 2005 Chevrolet Tahoe, was "
+      "eastbound negotiating the same curve. The rear of the Acura slid out and the car rotated counterclockwise "
+      "across the center line into the eastbound lane, where the front of the Tahoe struck the right side of the "
+      "Acura.");
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+}
+
 }  // namespace
 }  // namespace accsim
