@@ -87,7 +87,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.95}}},
       {"nmvccs_style_j", 40,
-       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.85},
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.92},
         {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.92}}},
   };
   for (const Set& set : sets) {
