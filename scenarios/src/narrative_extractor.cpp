@@ -87,6 +87,8 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kNonContact, "noncontact");
   static const regex kSingleLane(R"(\bsingle[- ]lane\b)");
   s = std::regex_replace(s, kSingleLane, "1-lane");
+  static const regex kSingleTravelLane(R"(\bsingle\s+(travel|through|traffic)\s+lane\b)");
+  s = std::regex_replace(s, kSingleTravelLane, "1 $1 lane");
   // "the maximum speed allowed", "the legal speed": the limit.
   static const regex kLimitSynonym(
       R"(\b(?:maximum|max\.?)\s+(?:legal\s+|allowed\s+|allowable\s+|permitted\s+|posted\s+)?speed(?:\s+(?:allowed|permitted|limit))?\b|\b(?:legal|lawful)\s+speed(?:\s+limit)?\b)");
@@ -502,6 +504,7 @@ struct RoadStatement {
   bool ramp = false;               // said of a ramp ("a single-lane entrance ramp")
   bool centre = false;             // its phrase adds a centre lane ("... separated by a 2-way left-turn lane")
   string name;                     // the named road its clause is about ("route 202 is ... with 1 lane each way")
+  string road;                     // the road its clause is about by kind ("the residential street was a 2-lane ...")
 };
 
 std::optional<int> AxisIn(const string& s) {
@@ -916,10 +919,27 @@ class RoadNames {
   regex pattern_;
 };
 
+// The road a count in a clause is said of as its subject ("the residential
+// street was a 2-lane road"); not one the count merely follows ("the
+// boulevard met a 2-lane street").
+string SubjectRoad(const string& s, size_t pos) {
+  const string road = ClauseRoad(s, pos);
+  if (road.empty()) return road;
+  const size_t stop = s.find_last_of(".;:", pos == 0 ? 0 : pos - 1);
+  const size_t from = stop == string::npos ? 0 : stop + 1;
+  const size_t at = s.find(road, from);
+  if (at == string::npos || at >= pos) return {};
+  const string between = s.substr(at + road.size(), pos - at - road.size());
+  static const regex kPredicate(
+      R"(^\s*(?:,[^,]*,\s*)?(?:is|was|has|had|carries|carried|consists of|consisted of)\b)");
+  static const regex kAnotherRoad(R"(\b)" + RoadNoun() + R"(\b)");
+  return Has(between, kPredicate) && !Has(between, kAnotherRoad) ? road : string();
+}
+
 // The road a vehicle's text puts it on ("was westbound on the side street").
 string RoadTravelledOn(const string& full) {
   const string t = BeforeTheTurn(full);
-  static const regex kOn(R"(\b(?:on|along|down|up|from|onto)\s+the\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
+  static const regex kOn(R"(\b(?:on|along|down|up|from|onto)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   return std::regex_search(t, m, kOn) ? m[1].str() : string();
 }
@@ -1581,6 +1601,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     return n;
   };
+  // The road V1 is said to be on by its kind ("v1 was westbound on the
+  // side street", "on a residential street"); "the road", "the street"
+  // name no road in particular.
+  string v1_road;
+  for (const Segment& seg : segments) {
+    if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
+    if (!(v1_road = RoadTravelledOn(seg.text)).empty()) break;
+  }
+  const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
   string v1_named_road;
   for (const Segment& seg : segments) {
     if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
@@ -1677,6 +1706,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (std::regex_search(phrase_after, rw, kRoadWord)) phrase_after = phrase_after.substr(0, static_cast<size_t>(rw.position()));
         rs.centre = Has(s.text.substr(start, pos - start) + " " + phrase_after, kCentreLane);
         rs.name = named_at(i, pos);
+        rs.road = SubjectRoad(s.text, pos);
         rs.total = total;
         rs.per_direction = per_dir;
         rs.directional = directional;
@@ -1810,6 +1840,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!best && v1_way <= 0 && !v1_named_road.empty()) {
       best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.name == v1_named_road; });
     }
+    if (!best && v1_way <= 0 && distinctive) {
+      best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.road == v1_road; });
+    }
     if (!best && v1_way <= 0 && v1_axis >= 0) {
       best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == v1_axis; });
     }
@@ -1941,6 +1974,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       smatch dm;
       if (!std::regex_search(cleaned, dm, word)) return false;
       const size_t at = static_cast<size_t>(dm.position());
+      // "a 2-lane county road crosses a divided highway", V1 on the county
+      // road: the word names another kind of road.
+      static const regex kQualifiedRoad(R"(^(?:county|state|rural|city|residential|side|cross|access|service|frontage)\s)");
+      if (distinctive && Has(v1_road, kQualifiedRoad)) {
+        static const regex kNounAfter(R"(^\s*(?:[\w-]+\s+){0,2}?)" + RoadNoun() + R"(\b)");
+        smatch nm;
+        const string after = cleaned.substr(at + static_cast<size_t>(dm.length()));
+        if (std::regex_search(after, nm, kNounAfter) && v1_road.find(nm[1].str()) == string::npos) return false;
+      }
       const size_t from = RoadPhraseStart(cleaned, at);
       string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);
       const size_t next = phrase.find(" and ", at - from + static_cast<size_t>(dm.length()));
@@ -2145,14 +2187,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       return nullptr;
     };
-    // The limit of the road V1 is said to be on ("v1 was westbound on the
-    // side street"); "the road", "the street" name no road in particular.
-    string v1_road;
-    for (const Segment& seg : segments) {
-      if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
-      if (!(v1_road = RoadTravelledOn(seg.text)).empty()) break;
-    }
-    const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
     if (std::getenv("ACCSIM_DEBUG_ROADS")) {
       std::fprintf(stderr, "[v1 named road: %s]\n", v1_named_road.c_str());
       for (const auto& l : limits) {

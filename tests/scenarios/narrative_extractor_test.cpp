@@ -1708,5 +1708,30 @@ TEST(NarrativeExtractorTest, TheContactsClauseNamesTheStruckArea) {
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
 }
 
+TEST(NarrativeExtractorTest, RoadsNamedByTheirKindSingleTravelLanesAndACrossedDividedHighway) {
+  // V1 "on a residential street"; the arterial is described first.
+  const auto residential = kExtractor.Extract(
+      "Vehicle 1 was northbound on a residential street and stopped at the stop sign where the street ended at a "
+      "T-intersection with an east/west arterial. Vehicle 2 was eastbound in lane one of the arterial. The front of "
+      "Vehicle 2 struck the left side of Vehicle 1. The arterial was a four-lane, two-way roadway with two lanes in "
+      "each direction and a posted speed limit of 89 km/h (55 mph). The residential street was a two-lane, two-way "
+      "road with a posted speed limit of 56 km/h (35 mph).");
+  EXPECT_EQ(residential.road.lanes_total.value, 2);
+  EXPECT_NEAR(residential.road.speed_limit_mps.value * 3.6, 56.0, 0.5);
+  // "two one-way streets, each with a single travel lane".
+  const auto single = kExtractor.Extract(
+      "The crash occurred in the intersection of two one-way urban streets, each with a single travel lane. Vehicle "
+      "#1 was southbound. Vehicle #2 was eastbound and its front struck the right side of Vehicle #1.");
+  EXPECT_EQ(single.road.lanes_total.value, 1);
+  // "a two-lane county road crosses a divided highway": V1 on the county road.
+  const auto crossed = kExtractor.Extract(
+      "The crash occurred at an intersection where a two-lane county road crosses a divided highway. The highway ran "
+      "east and west with two travel lanes in each direction separated by a grass median. The county road had one "
+      "lane in each direction. V1 was northbound on the county road. V2 was westbound. The front of V2 struck the "
+      "right side of V1.");
+  EXPECT_FALSE(crossed.road.divided.value);
+  EXPECT_EQ(crossed.road.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
