@@ -947,7 +947,7 @@ string RoadTravelledOn(const string& full) {
 // "exiting a parking lot driveway", "at the parking lot exit".
 bool LeavesDriveway(const string& t) {
   static const regex kFromDriveway(
-      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|\bparking lot (?:exit|driveway)\b|)"
+      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley|plaza|shopping center|mall|gas station|service station)\b|\bparking lot (?:exit|driveway)\b|)"
       // "stopped at the mouth of the driveway", "drove south through the exit driveway".
       R"(\b(?:stopped|waiting|sitting|sat|paused|idling|was|were|emerged|emerging)\s+(?:[\w-]+\s+){0,2}?(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
       R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b|)"
@@ -1638,7 +1638,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(
-        R"(\b(\d)[- ](?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
+        R"(\b(\d)[- ](?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
     static const regex kOneWayHere(R"(\boneway\b)");
     // Roads named with their axis ("a north/south rural highway and an
     // east/west county road") give it to later sentences about them ("the
@@ -1735,7 +1735,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // widened to 3 lanes", "the eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
         // ("2 through lanes and a left-turn bay").
         static const regex kDirectionSubject(
-            R"(\b(?:north|south|east|west)bound\s+(?:roadway|side|carriageway|half|direction|approach)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+            R"(\b(?:north|south|east|west)bound\s+(?:roadway|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
         static const regex kBayAfter(R"(^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
         const int n = std::stoi((*it)[1].str());
         smatch dm;
@@ -1753,7 +1753,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             add(*it, static_cast<size_t>(it->position()), n, 0, 0);
             roads.back().one_way = true;
           } else {
-            add(*it, static_cast<size_t>(it->position()), 0, 0, n + (Has(after, kBayAfter) ? 1 : 0));
+            // ... and a turn lane told before the count ("the southbound
+            // approach had a left-turn lane and 2 through lanes").
+            static const regex kBayBefore(R"(\bturn\s+(?:lane|bay)\s+(?:and|plus)\s+$)");
+            const bool bay = Has(after, kBayAfter) || Has(subject, kBayBefore);
+            add(*it, static_cast<size_t>(it->position()), 0, 0, n + (bay ? 1 : 0));
           }
           continue;
         }

@@ -1733,5 +1733,33 @@ TEST(NarrativeExtractorTest, RoadsNamedByTheirKindSingleTravelLanesAndACrossedDi
   EXPECT_EQ(crossed.road.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, LaneWidthsTurnLanesFirstAndTrafficsLanes) {
+  // "three 3.7-meter travel lanes" on one side of a divided interstate.
+  const auto widths = kExtractor.Extract(
+      "This crash occurred in the northbound lanes of an interstate highway. The northbound side had three "
+      "3.7-meter travel lanes and was separated from the southbound lanes by a concrete median barrier. V2 was "
+      "stopped in lane two. V1 was traveling north in lane two behind V2. The front of V1 struck the back of V2.");
+  EXPECT_EQ(widths.road.lanes_per_direction.value, 3);
+  // "The southbound approach had a left-turn lane and two through lanes, and
+  // the northbound approach was configured the same way": 6, undivided.
+  const auto approach = kExtractor.Extract(
+      "The southbound approach had a left-turn lane and two through lanes, and the northbound approach was "
+      "configured the same way; the two directions were separated only by painted double yellow lines. V1 was "
+      "southbound in the left-turn lane. V2 was northbound in the left through lane. V1 turned left and the front "
+      "of V2 struck the right side of V1.");
+  EXPECT_EQ(approach.road.lanes_total.value, 6);
+  // "Eastbound traffic had two travel lanes" of a divided highway.
+  const auto traffic = kExtractor.Extract(
+      "The crash occurred in the eastbound lanes of a divided highway. Eastbound traffic had two travel lanes, "
+      "separated from the westbound lanes by a median with a W-beam guardrail. V1 was eastbound in lane one. V2 was "
+      "eastbound in lane two. The right side of V2 struck the left side of V1.");
+  EXPECT_EQ(traffic.road.lanes_per_direction.value, 2);
+  // V1 "southbound leaving the plaza" was on its drive.
+  const auto plaza = kExtractor.Extract(
+      "This crash occurred at the exit of a shopping plaza onto a five-lane urban arterial. V1 was southbound leaving "
+      "the plaza. V2 was westbound. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(plaza.road.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
