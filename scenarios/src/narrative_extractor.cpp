@@ -1425,8 +1425,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (Has(seg.text, kOppositeDir)) relation[vi] = -1;
         else if (Has(seg.text, kSameDir)) relation[vi] = 1;
       }
-      if (!v.lane.known() && std::regex_search(seg.text, m, kLaneNo)) {
-        v.lane.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
+      // Where it came to rest ("came to rest in lane 3") is not its lane,
+      // nor is another vehicle's ("thought v2 was in lane 2").
+      if (!v.lane.known() && !Has(seg.text, kAtRest) && std::regex_search(seg.text, m, kLaneNo)) {
+        const size_t at = static_cast<size_t>(m.position());
+        const string lead = seg.text.substr(at > 20 ? at - 20 : 0, at > 20 ? 20 : at);
+        static const regex kRefNear(R"(\bv([1-9])\b)");
+        smatch rm;
+        const bool other = std::regex_search(lead, rm, kRefNear) && std::stoi(rm[1].str()) != seg.vehicle;
+        if (!other) v.lane.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
       }
     }
     if (kind != Kind::kCoding && !v.speed_mps.known() && !Has(seg.text, kLimitWords) &&
@@ -1813,8 +1820,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     int v1_way = 0;  // +1 one-way, -1 two-way, 0 not said
     for (const Segment& seg : segments) {
       if (seg.perceived || sentences[seg.sentence].kind == Kind::kCoding) continue;
-      if (seg.vehicle == 1 && Has(seg.text, kOnOneWay)) v1_way = 1;
-      else if (seg.vehicle == 1 && Has(seg.text, kOnTwoWay) && v1_way == 0) v1_way = -1;
+      // The road it turned onto is not the one it was on ("turned left to
+      // travel west on the one-way street").
+      const string travelled = BeforeTheTurn(seg.text);
+      if (seg.vehicle == 1 && Has(travelled, kOnOneWay)) v1_way = 1;
+      else if (seg.vehicle == 1 && Has(travelled, kOnTwoWay) && v1_way == 0) v1_way = -1;
     }
     static const regex kTwoWay(R"(\b2[- ]way\b)");
     if (v1_way == 0 && Has(scene, kTwoWay)) {

@@ -1761,5 +1761,21 @@ TEST(NarrativeExtractorTest, LaneWidthsTurnLanesFirstAndTrafficsLanes) {
   EXPECT_EQ(plaza.road.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, TheRoadTurnedOntoRestingLanesAndOthersLanesAreNotV1s) {
+  // V1 on the two-way street turned onto the one-way street, came to rest
+  // in lane 3 of it: its road is the two-way street's 2 lanes.
+  const auto r = kExtractor.Extract(
+      "The crash occurred at a T-intersection of a westbound one-way street and a two-way street. The one-way street "
+      "carried three lanes of westbound traffic. The two-way street had one lane in each direction. Vehicle #1 was "
+      "northbound on the two-way street. It stopped at the stop sign and then turned left to travel west on the "
+      "one-way street. Vehicle #2 was westbound in the middle lane. The front of Vehicle #2 struck the right side of "
+      "Vehicle #1. Vehicle #1 came to rest in lane three facing southwest. The driver of Vehicle #1 stated that she "
+      "thought Vehicle #2 was in lane two.");
+  EXPECT_FALSE(r.road.one_way.value);
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  ASSERT_FALSE(r.vehicles.empty());
+  EXPECT_FALSE(r.vehicles[0].lane.known());
+}
+
 }  // namespace
 }  // namespace accsim
