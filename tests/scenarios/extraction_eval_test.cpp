@@ -81,7 +81,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
         {"collision_location", 0.95}, {"driving_actions", 0.84}, {"crash_type", 0.92}}},
       {"nmvccs_style_g", 40,
-       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.92}}},
       {"nmvccs_style_i", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
@@ -90,7 +90,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.92}}},
       {"nmvccs_style_l", 40,
-       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.92},
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.95},
         {"collision_location", 0.95}, {"driving_actions", 0.85}, {"crash_type", 0.97}}},
   };
   for (const Set& set : sets) {
