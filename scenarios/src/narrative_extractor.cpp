@@ -29,6 +29,9 @@ using std::string;
 
 bool Has(const string& s, const regex& re) { return std::regex_search(s, re); }
 
+// The (at most) n characters of s before position at.
+string Before(const string& s, size_t at, size_t n) { return at > n ? s.substr(at - n, n) : s.substr(0, at); }
+
 // regex_replace with a callback (std::regex has none).
 string ReplaceWith(const string& s, const regex& re, const std::function<string(const smatch&)>& fn) {
   string out;
@@ -431,7 +434,7 @@ std::optional<Compass> DirectionIn(const string& s) {
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kDir); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
     const size_t at = static_cast<size_t>(m.position());
-    if (m[2].matched && Has(s.substr(at > 50 ? at - 50 : 0, at > 50 ? 50 : at) + m[0].str(), kIntended)) continue;
+    if (m[2].matched && Has(Before(s, at, 50) + m[0].str(), kIntended)) continue;
     for (int g = 1; g <= 3; ++g) {
       if (!m[g].matched) continue;
       const bool turn = m[0].str().rfind("turn", 0) == 0;
@@ -786,13 +789,16 @@ const string& RoadNoun() {
 
 // The road the clause holding `pos` is about: its first named road ("the
 // side street is a 2-lane road posted at 30 mph" -> "side street").
-string ClauseRoad(const string& s, size_t pos) {
+// `end`, when given, is where that road's words end.
+string ClauseRoad(const string& s, size_t pos, size_t* end = nullptr) {
   const size_t stop = s.find_last_of(".;:", pos == 0 ? 0 : pos - 1);
   const size_t from = stop == string::npos ? 0 : stop + 1;
   static const regex kFirst(R"(\b(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   const string clause = s.substr(from, pos - from);
-  return std::regex_search(clause, m, kFirst) ? m[1].str() : string();
+  if (!std::regex_search(clause, m, kFirst)) return {};
+  if (end) *end = from + static_cast<size_t>(m.position(1) + m.length(1));
+  return m[1].str();
 }
 
 // A vehicle's text up to any turn or intention: the road it turns onto is
@@ -823,10 +829,10 @@ class RoadNames {
         "country", "through", "collector", "arterial", "intersecting", "connecting", "oneway", "left", "right",
         "curb", "turn", "travel", "center", "centre", "inside", "outside", "passing", "middle", "median", "bike",
         "parking", "acceleration", "deceleration", "exit", "entrance", "merge", "shoulder", "opposing", "oncoming",
-        "adjacent", "opposite", "driving", "traffic", "same", "private", "public", "gravel", "dead", "end", "via",
+        "adjacent", "opposite", "driving", "traffic", "public", "dead", "end", "via",
         "when", "as", "then", "but", "not", "no", "lanes", "lane", "road", "roadway", "street", "highway", "ramp",
         "new", "old", "two", "one", "first", "second", "third", "near", "far", "hov", "bus", "emergency", "fast", "slow",
-        "way", "service", "access"};
+        "way"};
     auto ok_word = [&](const string& w) {
       return !w.empty() && !kNotAName.count(w) && w.find("bound") == string::npos && w.find("'s") == string::npos;
     };
@@ -848,8 +854,7 @@ class RoadNames {
       }
     }
     if (names_.empty()) return;
-    std::vector<string> alts;
-    for (const auto& [name, _] : names_) alts.push_back(name);
+    std::vector<string> alts(names_.begin(), names_.end());
     for (const auto& [alias, name] : aliases_) {
       if (!alias_clash_.count(alias)) alts.push_back(alias);
     }
@@ -875,7 +880,7 @@ class RoadNames {
     static const regex kAppositive(R"(^\s*,\s*(?:a|an)\b[^,;]*$)");
     for (auto it = std::sregex_iterator(head.begin(), head.end(), pattern_); it != std::sregex_iterator(); ++it) {
       const size_t at = static_cast<size_t>(it->position());
-      const string before = head.substr(at > 20 ? at - 20 : 0, at > 20 ? 20 : at);
+      const string before = Before(head, at, 20);
       if (Has(before, kPlaceBefore) && !Has(head.substr(at + static_cast<size_t>(it->length())), kAppositive)) continue;
       found = Resolve((*it)[1].str());
     }
@@ -891,7 +896,7 @@ class RoadNames {
     static const regex kOnBefore(R"(\b(?:on|along|down|up)\s+(?:the\s+)?$)");
     for (auto it = std::sregex_iterator(head.begin(), head.end(), pattern_); it != std::sregex_iterator(); ++it) {
       const size_t at = static_cast<size_t>(it->position());
-      if (Has(head.substr(at > 15 ? at - 15 : 0, at > 15 ? 15 : at), kOnBefore)) return Resolve((*it)[1].str());
+      if (Has(Before(head, at, 15), kOnBefore)) return Resolve((*it)[1].str());
     }
     return {};
   }
@@ -902,7 +907,7 @@ class RoadNames {
     return n;
   }
   void Add(const string& name, const string& alias) {
-    names_[name] = true;
+    names_.insert(name);
     if (alias.empty()) return;
     auto [it, inserted] = aliases_.emplace(alias, name);
     if (!inserted && it->second != name) alias_clash_.insert(alias);
@@ -913,7 +918,7 @@ class RoadNames {
     const auto it = aliases_.find(mention);
     return it == aliases_.end() ? c : it->second;
   }
-  std::map<string, bool> names_;
+  std::set<string> names_;
   std::map<string, string> aliases_;
   std::set<string> alias_clash_;
   regex pattern_;
@@ -923,13 +928,10 @@ class RoadNames {
 // street was a 2-lane road"); not one the count merely follows ("the
 // boulevard met a 2-lane street").
 string SubjectRoad(const string& s, size_t pos) {
-  const string road = ClauseRoad(s, pos);
+  size_t end = 0;
+  const string road = ClauseRoad(s, pos, &end);
   if (road.empty()) return road;
-  const size_t stop = s.find_last_of(".;:", pos == 0 ? 0 : pos - 1);
-  const size_t from = stop == string::npos ? 0 : stop + 1;
-  const size_t at = s.find(road, from);
-  if (at == string::npos || at >= pos) return {};
-  const string between = s.substr(at + road.size(), pos - at - road.size());
+  const string between = s.substr(end, pos - end);
   static const regex kPredicate(
       R"(^\s*(?:,[^,]*,\s*)?(?:is|was|has|had|carries|carried|consists of|consisted of)\b)");
   static const regex kAnotherRoad(R"(\b)" + RoadNoun() + R"(\b)");
@@ -1256,7 +1258,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     };
     std::vector<Start> starts;
     for (const Ref& ref : s.refs) {
-      const string before = s.text.substr(ref.pos > 40 ? ref.pos - 40 : 0, ref.pos > 40 ? 40 : ref.pos);
+      const string before = Before(s.text, ref.pos, 40);
       const string after = s.text.substr(ref.pos + 2, 80);
       if (Has(before, kSubjectBefore) || Has(after, kRelativeAfter)) {
         starts.push_back({ref.pos, ref.vehicle, false});
@@ -1282,7 +1284,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTheVehicle); it != std::sregex_iterator(); ++it) {
       const size_t pos = static_cast<size_t>(it->position());
       const int last = named_last_before(pos);
-      if (last > 0 && Has(s.text.substr(pos > 40 ? pos - 40 : 0, pos > 40 ? 40 : pos), kSubjectBefore)) {
+      if (last > 0 && Has(Before(s.text, pos, 40), kSubjectBefore)) {
         anaphora.push_back({pos, last, false});
       }
     }
@@ -1318,7 +1320,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (auto it = std::sregex_iterator(t.cbegin() + static_cast<std::ptrdiff_t>(skip), t.cend(), kOtherVehicle);
            it != std::sregex_iterator(); ++it) {
         const size_t at = static_cast<size_t>(it->position()) + skip;
-        if (Has(t.substr(at > 20 ? at - 20 : 0, at > 20 ? 20 : at), kTowing)) continue;
+        if (Has(Before(t, at, 20), kTowing)) continue;
         t = t.substr(0, at);
         break;
       }
@@ -1429,7 +1431,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // nor is another vehicle's ("thought v2 was in lane 2").
       if (!v.lane.known() && !Has(seg.text, kAtRest) && std::regex_search(seg.text, m, kLaneNo)) {
         const size_t at = static_cast<size_t>(m.position());
-        const string lead = seg.text.substr(at > 20 ? at - 20 : 0, at > 20 ? 20 : at);
+        const string lead = Before(seg.text, at, 20);
         static const regex kRefNear(R"(\bv([1-9])\b)");
         smatch rm;
         const bool other = std::regex_search(lead, rm, kRefNear) && std::stoi(rm[1].str()) != seg.vehicle;
@@ -1609,23 +1611,20 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     return n;
   };
   // The road V1 is said to be on by its kind ("v1 was westbound on the
-  // side street", "on a residential street"); "the road", "the street"
-  // name no road in particular.
-  string v1_road;
+  // side street", "on a residential street"; "the road", "the street"
+  // name no road in particular) and by name ("on route 9").
+  string v1_road, v1_named_road;
   for (const Segment& seg : segments) {
     if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
-    if (!(v1_road = RoadTravelledOn(seg.text)).empty()) break;
-  }
-  const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
-  string v1_named_road;
-  for (const Segment& seg : segments) {
-    if (seg.vehicle != 1 || seg.perceived || sentences[seg.sentence].kind != Kind::kNarrative) continue;
+    if (v1_road.empty()) v1_road = RoadTravelledOn(seg.text);
     // "v1 (...) and v2 were both westbound on route 9": the coordinated
     // subject's predicate is the sentence's.
     static const regex kCoordinatedEnd(R"(\band\s*$)");
     const string& said = Has(seg.text, kCoordinatedEnd) ? sentences[seg.sentence].text : seg.text;
-    if (!(v1_named_road = road_names.TravelledOn(said)).empty()) break;
+    if (v1_named_road.empty()) v1_named_road = road_names.TravelledOn(said);
+    if (!v1_road.empty() && !v1_named_road.empty()) break;
   }
+  const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
   // Which vehicle's segment a position in a sentence belongs to.
   auto owner_at = [&](const Sentence& s, size_t pos) {
     int owner = 0;
@@ -1688,7 +1687,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
         // One-way belongs to this road only when no other road phrase
         // (", and a ...") sits between the count and the word.
-        const string near_before = s.text.substr(pos > 25 ? pos - 25 : 0, pos > 25 ? 25 : pos);
+        const string near_before = Before(s.text, pos, 25);
         string near_after = s.text.substr(pos + static_cast<size_t>(m.length(0)), 15);
         // ... but "a 1-lane, oneway roadway" lists adjectives of one road.
         const size_t comma = near_after.rfind(", oneway", 0) == 0 || near_after.rfind(",oneway", 0) == 0
@@ -1707,7 +1706,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // the centre lane is the other road's).
         static const regex kCentreLane(
             R"(\b(?:center|centre|continuous|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|\b2[- ]way left[- ]turn lane\b)");
-        static const regex kRoadWord(R"(\b(?:road|roadway|street|highway|avenue|boulevard|route|arterial)\b)");
+        static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
         string phrase_after = s.text.substr(pos + static_cast<size_t>(m.length(0)));
         smatch rw;
         if (std::regex_search(phrase_after, rw, kRoadWord)) phrase_after = phrase_after.substr(0, static_cast<size_t>(rw.position()));
@@ -1977,14 +1976,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     };
     // "a median crossover", "stopped in the median": the other road's median.
     static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
-    // Whether a sentence says `word` of V1's road: not of a road across V1's
-    // course at a junction, judged by the axis of the phrase that says it ("a
-    // north/south divided highway and an east/west county road": the
-    // highway's), else the sentence's; not in another road's lane count.
-    auto says_of_v1s_road = [&](const Sentence& s, const regex& word) {
-      if (other_roads_sentence(static_cast<size_t>(&s - sentences.data()))) return false;
-      if (s.kind != Kind::kNarrative && s.kind != Kind::kStatement) return false;
-      const string cleaned = std::regex_replace(s.text, kMedianPlace, " ");
+    // Whether a sentence (its median places blanked) says `word` of V1's
+    // road: not of a road across V1's course at a junction, judged by the
+    // axis of the phrase that says it ("a north/south divided highway and an
+    // east/west county road": the highway's), else the sentence's.
+    auto says_of_v1s_road = [&](const Sentence& s, const string& cleaned, const regex& word) {
       smatch dm;
       if (!std::regex_search(cleaned, dm, word)) return false;
       const size_t at = static_cast<size_t>(dm.position());
@@ -2007,8 +2003,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     };
     bool divided = false, undivided = false;
     for (const Sentence& s : sentences) {
-      if (says_of_v1s_road(s, kUndivided)) undivided = true;
-      if (!says_of_v1s_road(s, kDivided)) continue;
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) ||
+          other_roads_sentence(static_cast<size_t>(&s - sentences.data()))) {
+        continue;
+      }
+      const string cleaned = std::regex_replace(s.text, kMedianPlace, " ");
+      if (says_of_v1s_road(s, cleaned, kUndivided)) undivided = true;
+      if (!says_of_v1s_road(s, cleaned, kDivided)) continue;
       static const regex kRest(R"(\b(?:came to (?:its |their )?(?:final )?rest|final rest|rest(?:ed|ing)? against)\b)");
       if (Has(s.text, kRest)) continue;  // "came to rest against the median curb"
       // In a sentence about a vehicle, a median is where it went ("stopped
@@ -2184,7 +2185,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const bool subject = std::regex_search(s.text, m, kRoadSubject) && s.refs.empty();
         if (!subject && !std::regex_search(s.text, m, kRoadValue)) continue;
         const size_t pos = static_cast<size_t>(m.position(1));
-        if (Has(s.text.substr(pos > 30 ? pos - 30 : 0, pos > 30 ? 30 : pos), kTravelWord)) continue;
+        if (Has(Before(s.text, pos, 30), kTravelWord)) continue;
         const double value = std::stod(m[1].str());
         const bool kmh = m[2].str() == "kmh";
         if (value < 5 || value > 180) continue;
