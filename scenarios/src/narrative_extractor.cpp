@@ -109,6 +109,22 @@ string Normalise(std::string_view in) {
       {regex(R"(\bhwy\b)"), "highway"},
   }};
   s = ReplaceEach(s, kAbbreviations);
+  // Present tense, as police narratives often write it ("v1 is traveling
+  // north ... v2 has been stopped ... the front of v1 strikes"): the rules
+  // read the investigators' past tense.
+  static const std::array<std::pair<regex, const char*>, 10> kPresentTense = {{
+      {regex(R"(\bis\b)"), "was"},
+      {regex(R"(\bare\b)"), "were"},
+      {regex(R"(\b(?:has|have)\b)"), "had"},
+      {regex(R"(\bdoes\b)"), "did"},
+      {regex(R"(\bstrikes\b)"), "struck"},
+      {regex(R"(\bimpacts\b)"), "impacted"},
+      {regex(R"(\bcontacts\b)"), "contacted"},
+      {regex(R"(\bcollides\b)"), "collided"},
+      {regex(R"(\bcomes\b)"), "came"},
+      {regex(R"(\b(he|she|driver|it|v[1-9]) (?:states|says)\b)"), "$1 stated"},
+  }};
+  s = ReplaceEach(s, kPresentTense);
   // Number words: "forty-five" -> 45, "two" -> 2.
   static const regex kCompound(
       R"(\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b)");
@@ -843,7 +859,8 @@ class RoadNames {
       for (auto it = std::sregex_iterator(t.begin(), t.end(), kWorded); it != std::sregex_iterator(); ++it) {
         const smatch& m = *it;
         const size_t at = static_cast<size_t>(m.position());
-        if (at > 0 && (t[at - 1] == '-' || std::isdigit(static_cast<unsigned char>(t[at - 1])))) continue;  // "2-way road"
+        // "2-way road", "an east/west road"
+        if (at > 0 && (t[at - 1] == '-' || t[at - 1] == '/' || std::isdigit(static_cast<unsigned char>(t[at - 1])))) continue;
         const string w1 = m[1].str(), w2 = m[2].matched ? m[2].str() : string();
         if (!ok_word(w1) || (!w2.empty() && !ok_word(w2))) {
           if (w2.empty() || !ok_word(w2)) continue;
@@ -1345,8 +1362,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       return s.text.size();
     };
-    // "v2 and v3 were slowing": a coordinated subject shares its predicate.
-    static const regex kCoordinated(R"(^v[1-9]\s*(?:,\s*an?\s+[^,;]{1,60})?\s*(?:,\s*(?:and\s+)?|and\s+)$)");
+    // "v2 and v3 were slowing": a coordinated subject shares its predicate,
+    // also with its body told after the model ("v2, a 1997 ford mustang,
+    // 2-door coupe and v3, ... were traveling south").
+    static const regex kCoordinated(
+        R"(^v[1-9]\s*(?:,\s*an?\s+[^,;]{1,60}(?:,\s*[^,;]{0,30}\b(?:door|sedan|coupe|pickup|truck|van|minivan|utility vehicle|wagon|hatchback|convertible|motorcycle|bus)\b)?)?\s*(?:,\s*(?:and\s+)?|and\s+)$)");
     for (size_t k = 0; k < starts.size(); ++k) {
       if (k > 0 && starts[k - 1].vehicle == starts[k].vehicle) continue;
       size_t from = starts[k].pos, end = end_of(k);
@@ -1640,7 +1660,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // "each direction of route 30 has 2 through lanes plus a left-turn bay",
     // "a grass median and, in each direction, 2 through lanes and a left-turn lane".
     static const regex kEachHas(
-        R"((?:\beach direction\b[^.;]{0,30}?\bhas|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
+        R"((?:\beach direction\b[^.;]{0,30}?\b(?:has|had)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(
@@ -1738,10 +1758,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)");
         if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), kNotARoadBefore)) continue;
         // "the eastbound roadway had 3 travel lanes", "the southbound side
-        // widened to 3 lanes", "the eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
+        // widened to 3 lanes", "southbound there were 3 lanes", "the
+        // eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
         // ("2 through lanes and a left-turn bay").
         static const regex kDirectionSubject(
-            R"(\b(?:north|south|east|west)bound\s+(?:roadway|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+            R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
         static const regex kBayAfter(R"(^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
         const int n = std::stoi((*it)[1].str());
         smatch dm;
@@ -1885,7 +1906,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // ACCSIM_DEBUG_ROADS=1 lists every lane statement on stderr and marks
     // the one taken for V1's road.
     if (std::getenv("ACCSIM_DEBUG_ROADS")) {
-      for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d]%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, &rs == best ? " <- best" : "");
+      for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d road '%s']%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, rs.road.c_str(), &rs == best ? " <- best" : "");
     }
     if (best) {
       // Combine statements about the same road (a total in one sentence, the
@@ -2037,7 +2058,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (LeavesDriveway(seg.text)) v1_from_driveway = true;
       if (Has(seg.text, kMiddleLane)) v1_middle_lane = true;
     }
-    if (v1_from_driveway && !(best && best->owner == 1)) {
+    // A count in V1's own text is its drive's, unless it is the road's the
+    // drive comes out on ("through a driveway on the north side of a 5-lane
+    // roadway").
+    auto counts_the_drive = [&](const RoadStatement& rs) {
+      static const regex kRoadCount(
+          R"(^\d[- ]lanes?\b(?:[^.;]{0,40}?\b(?:road|roadway|street|highway|avenue|boulevard|route|trafficway)\b))");
+      return rs.owner == 1 && !Has(sentences[rs.sentence].text.substr(rs.pos, 60), kRoadCount);
+    };
+    if (v1_from_driveway && !(best && counts_the_drive(*best))) {
       // ... one lane when the report says the drive is one-way or one lane
       // ("a one-way, exit-only driveway", "a narrow, 1-lane paved alley").
       static const regex kOneLaneDrive(

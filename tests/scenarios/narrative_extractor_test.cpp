@@ -933,6 +933,16 @@ TEST(NarrativeExtractorTest, CoordinatedSubjectsWithTheirDescriptions) {
       "front of Vehicle #1 struck the back of Vehicle #2.");
   EXPECT_EQ(queue.vehicles[1].movement.value, Movement::kStopped);
   EXPECT_EQ(queue.vehicles[2].movement.value, Movement::kStopped);
+  // "V2, a 1997 Ford Mustang, 2-door coupe and V3, ... were traveling south":
+  // V2 is southbound too, so its front into V1's front is a head-on.
+  const auto pass = kExtractor.Extract(
+      "Vehicle one (V1), a 2004 Honda Civic, 4-door sedan was traveling north on a two-lane road. Vehicle two (V2), a "
+      "1997 Ford Mustang, 2-door coupe and vehicle three (V3), a 2001 Dodge Ram, 2-door pickup truck were traveling "
+      "south in the southbound lane, with V2 following V3. The driver of V2 pulled into the northbound lane to pass "
+      "V3. The front of V2 struck the front of V1.");
+  ASSERT_EQ(pass.vehicles.size(), 3u);
+  EXPECT_EQ(pass.vehicles[1].travel.value, Compass::kSouth);
+  EXPECT_EQ(pass.crash.type.value, CrashType::kHeadOn);
 }
 
 TEST(NarrativeExtractorTest, QueueWordsPassingAndMovingOff) {
@@ -1775,6 +1785,67 @@ TEST(NarrativeExtractorTest, TheRoadTurnedOntoRestingLanesAndOthersLanesAreNotV1
   EXPECT_EQ(r.road.lanes_total.value, 2);
   ASSERT_FALSE(r.vehicles.empty());
   EXPECT_FALSE(r.vehicles[0].lane.known());
+}
+
+TEST(NarrativeExtractorTest, PresentTenseReadsAsThePast) {
+  // Police narratives are often in the present tense.
+  const auto queue = kExtractor.Extract(
+      "The crash occurs on a two lane undivided roadway. V1 is traveling south when it impacts the rear of V2 with "
+      "its front. V2 has been stopped in the southbound lane waiting for traffic to pass.");
+  ASSERT_EQ(queue.vehicles.size(), 2u);
+  EXPECT_EQ(queue.vehicles[1].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(queue.crash.type.value, CrashType::kRearEnd);
+  const auto stop = kExtractor.Extract(
+      "The crash occurs at a T-intersection. V1 is traveling west on the main street. V2 is traveling south on the "
+      "north/south street. The driver of V2 comes to a complete stop at her stop sign. The driver of V2 then enters "
+      "the intersection and attempts to turn left. Its left side is struck by the front of V1.");
+  ASSERT_EQ(stop.vehicles.size(), 2u);
+  EXPECT_EQ(stop.vehicles[1].pre_event.value, Movement::kStopped);
+  // "each direction of route 30 has two through lanes plus a left-turn bay".
+  const auto bay = kExtractor.Extract(
+      "V1 was traveling east on Route 30, a divided highway, approaching the signalized intersection with Maple "
+      "Street. At the intersection each direction of Route 30 has two through lanes plus a left-turn bay. Maple "
+      "Street is a two-lane street. V1 turned left and its right side was struck by the front of V2, which was "
+      "westbound.");
+  EXPECT_EQ(bay.road.lanes_per_direction.value, 3);
+}
+
+TEST(NarrativeExtractorTest, OneDirectionsLanesWhateverTheRoadIsCalled) {
+  // "the southbound road had two through lanes" of a divided road, as
+  // "the southbound roadway" would.
+  const auto road = kExtractor.Extract(
+      "The crash occurred in the southbound lanes of a divided road approaching an intersection. The southbound road "
+      "had two through lanes and was separated from the northbound lanes by a raised median. V2 was stopped in the "
+      "right lane. V1 was traveling south behind it. The front of V1 struck the rear of V2.");
+  EXPECT_TRUE(road.road.divided.value);
+  EXPECT_EQ(road.road.lanes_per_direction.value, 2);
+  // "southbound there were three lanes: two through lanes and the left-turn lane".
+  const auto there = kExtractor.Extract(
+      "V1 was southbound in the left-turn lane of a state highway intending to turn left. V2 was northbound in the "
+      "left through lane. The front of V2 struck the right side of V1. The highway is divided by a raised median. "
+      "Southbound there were three lanes at the intersection: two through lanes and the left-turn lane. Northbound "
+      "there were two through lanes.");
+  EXPECT_EQ(there.road.lanes_per_direction.value, 3);
+  // "an east/west road" is not a road named "west road".
+  const auto axis = kExtractor.Extract(
+      "The east/west road was a four-lane, two-way, undivided road with two lanes in each direction and a posted "
+      "speed limit of 45 mph (72 kph). The north/south road was a two-lane, two-way road with a posted speed limit of "
+      "30 mph (48 kph) and was controlled by stop signs on the north and south legs. V1, a 2001 Hyundai Sonata "
+      "sedan, was traveling southbound on the north leg and stopped at the stop sign, intending to turn right to "
+      "travel westbound. V1 pulled out and began its right turn, and the front of V2 struck the left side of V1 in "
+      "lane one of the westbound lanes. Both vehicles came to final rest on the west leg facing west.");
+  EXPECT_EQ(axis.road.lanes_total.value, 2);
+  EXPECT_NEAR(axis.road.speed_limit_mps.value * 3.6, 48.3, 0.5);
+}
+
+TEST(NarrativeExtractorTest, LeavingADriveOntoACountedRoadIsOnTheDrive) {
+  // V1's own sentence counts the road the drive comes out on, not the drive.
+  const auto r = kExtractor.Extract(
+      "V1 was leaving a shopping center parking lot through a driveway on the north side of a five-lane roadway (two "
+      "lanes each way with a center two-way left-turn lane). The roadway was posted at 40 mph. The driver stopped at "
+      "the end of the driveway and then pulled out to turn left. V2 was westbound in the curb lane. The front of V2 "
+      "struck the left side of V1.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
 }
 
 }  // namespace
