@@ -518,6 +518,7 @@ struct RoadStatement {
   int owner = 0;                   // vehicle whose segment states it (0: none)
   std::optional<int> axis;         // 0 = east-west, 1 = north-south, when the phrase names one
   int total = 0, per_direction = 0, directional = 0;
+  std::optional<Compass> bound;    // the direction a directional count is of ("3 westbound lanes")
   bool one_way = false;
   bool cross = false;              // said of the cross street ("the cross street is a 2-lane road")
   bool ramp = false;               // said of a ramp ("a single-lane entrance ramp")
@@ -782,7 +783,7 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
       R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)");
   static const regex kResidential(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)");
   static const regex kRural(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)");
-  static const regex kUrban(R"(\b(?:urban|city|downtown|business district|commercial)\b)");
+  static const regex kUrban(R"(\b(?:urban|suburban|city|downtown|business district|commercial)\b)");
   static const regex kOneWayStreet(R"(\boneway (?:\w+ )?(?:road|roadway|street)\b)");
   static const regex kHighway(R"(\bhighway\b)");
   if (Has(scene, kFreeway)) return 70.0;
@@ -949,8 +950,10 @@ string SubjectRoad(const string& s, size_t pos) {
   const string road = ClauseRoad(s, pos, &end);
   if (road.empty()) return road;
   const string between = s.substr(end, pos - end);
+  // "the side street, a residential road, had ...", "the side street
+  // approached from the south, had ...".
   static const regex kPredicate(
-      R"(^\s*(?:,[^,]*,\s*)?(?:is|was|has|had|carries|carried|consists of|consisted of)\b)");
+      R"(^\s*(?:,[^,]*,\s*|\s+[a-z]+ed\b[^,;]{0,30},\s*)?(?:is|was|has|had|carries|carried|consists of|consisted of)\b)");
   static const regex kAnotherRoad(R"(\b)" + RoadNoun() + R"(\b)");
   return Has(between, kPredicate) && !Has(between, kAnotherRoad) ? road : string();
 }
@@ -1644,6 +1647,27 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (v1_named_road.empty()) v1_named_road = road_names.TravelledOn(said);
     if (!v1_road.empty() && !v1_named_road.empty()) break;
   }
+  // V1 stopped at a stop sign on a road the report does not name for it:
+  // the one road the report says a stop sign controls ("the residential
+  // street ... was controlled by a stop sign").
+  if (v1_road.empty() && v1_named_road.empty()) {
+    static const regex kAtTheSign(R"(\b(?:stopped|stop|waiting|sat|paused)\b[^.;]{0,25}?\bstop sign\b)");
+    const bool v1_at_sign = std::any_of(segments.begin(), segments.end(), [&](const Segment& seg) {
+      return seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact &&
+             sentences[seg.sentence].kind == Kind::kNarrative && Has(seg.text, kAtTheSign);
+    });
+    static const regex kSignControls(
+        R"(\b(?:controlled by|had|has|with|faced)\s+(?:a\s+)?stop signs?\b|\bstop[- ]sign[- ]controlled\b)");
+    std::set<string> signed_roads;
+    for (const Sentence& s : sentences) {
+      if (!v1_at_sign || s.kind != Kind::kNarrative || !s.refs.empty()) continue;
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kSignControls); it != std::sregex_iterator(); ++it) {
+        const string road = ClauseRoad(s.text, static_cast<size_t>(it->position()));
+        if (!road.empty()) signed_roads.insert(road);
+      }
+    }
+    if (signed_roads.size() == 1) v1_road = *signed_roads.begin();
+  }
   const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
   // Which vehicle's segment a position in a sentence belongs to.
   auto owner_at = [&](const Sentence& s, size_t pos) {
@@ -1683,6 +1707,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
     }
     std::vector<RoadStatement> roads;
+    // A direction the report calls a one-way road ("a northbound one-way
+    // roadway"): a count of that direction's lanes is the road's total.
+    auto one_way_bound = [&](const std::optional<Compass>& bound) {
+      if (!bound) return false;
+      const string dir(ToString(*bound));
+      const regex one_way_dir(R"(\b)" + dir + R"(bound\s+oneway\b|\boneway\s+(?:[\w-]+\s+)?)" + dir + R"(bound\b)");
+      return Has(scene, one_way_dir);
+    };
     for (size_t i = 0; i < sentences.size(); ++i) {
       const Sentence& s = sentences[i];
       if (s.kind != Kind::kNarrative && s.kind != Kind::kStatement) continue;
@@ -1747,7 +1779,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
            ++it) {
         const auto& m = *it;
-        add(m, static_cast<size_t>(m.position()), 0, 0, std::stoi(m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str()));
+        const int n = std::stoi(m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str());
+        const std::optional<Compass> bound = DirectionIn(m.str());
+        if (one_way_bound(bound)) {
+          add(m, static_cast<size_t>(m.position()), n, 0, 0);  // "the avenue had 3 southbound lanes", one-way
+          roads.back().one_way = true;
+          continue;
+        }
+        add(m, static_cast<size_t>(m.position()), 0, 0, n);
+        roads.back().bound = bound;
       }
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTotal); it != std::sregex_iterator(); ++it) {
         // "lane 2" / "the 2 lanes to the left" are not road descriptions; "2-lane", "2 lane road" are.
@@ -1771,12 +1811,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           // ... unless that direction's road is one-way ("a northbound
           // one-way roadway and a westbound one-way roadway. the northbound
           // roadway had 3 travel lanes"): then it is the road's total.
-          static const regex kDirWord(R"(\b(north|south|east|west)bound\b)");
-          smatch wm;
           const string subject = dm.str();
-          const string dir = std::regex_search(subject, wm, kDirWord) ? wm[1].str() : string();
-          const regex one_way_dir(R"(\b)" + dir + R"(bound\s+oneway\b|\boneway\s+(?:[\w-]+\s+)?)" + dir + R"(bound\b)");
-          if (!dir.empty() && Has(scene, one_way_dir)) {
+          const std::optional<Compass> bound = DirectionIn(subject);
+          if (one_way_bound(bound)) {
             add(*it, static_cast<size_t>(it->position()), n, 0, 0);
             roads.back().one_way = true;
           } else {
@@ -1785,6 +1822,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             static const regex kBayBefore(R"(\bturn\s+(?:lane|bay)\s+(?:and|plus)\s+$)");
             const bool bay = Has(after, kBayAfter) || Has(subject, kBayBefore);
             add(*it, static_cast<size_t>(it->position()), 0, 0, n + (bay ? 1 : 0));
+            roads.back().bound = bound;
           }
           continue;
         }
@@ -1912,6 +1950,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // Combine statements about the same road (a total in one sentence, the
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
+      // A count of V1's own direction ("giving 3 westbound lanes", V1
+      // westbound) is its lanes, before one of the other direction's or an
+      // each-way count.
+      const int v1_dir = r.vehicles.empty() || !r.vehicles[0].travel.value ? -1 : static_cast<int>(*r.vehicles[0].travel.value);
+      auto of_v1s_direction = [&](const RoadStatement& rs) { return rs.bound && static_cast<int>(*rs.bound) == v1_dir; };
+      bool v1s_direction = directional && of_v1s_direction(*best);
       bool one_way = best->one_way || best->ramp;  // a ramp carries one direction
       // The best statement's own sentence first: the one before may count
       // another road ("a 5-lane road and a 3-lane road. the 3-lane road had
@@ -1927,10 +1971,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             (rs.axis && best->axis && rs.axis != best->axis)) {
           continue;
         }
-        if (rs.sentence > best->sentence + 1) continue;
+        if (rs.sentence > best->sentence + 1 || rs.sentence + 1 < best->sentence) continue;
+        if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
         if (!total && rs.total) total = rs.total;
         if (!per && rs.per_direction) per = rs.per_direction;
-        if (!directional && rs.directional) directional = rs.directional;
+        if (rs.directional && (!directional || (!v1s_direction && of_v1s_direction(rs)))) {
+          directional = rs.directional;
+          v1s_direction = of_v1s_direction(rs);
+        }
       }
       static const regex kOneWaySentence(R"(\boneway\b)");
       static const regex kOtherRoadPhrase(R"(\b2[- ]way\b|\band (?:a|an)\b)");
@@ -1953,8 +2001,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // "2 through lanes in each direction separated by a continuous
         // two-way left-turn lane": the centre lane is a fifth.
         const int centre = best->centre ? 1 : 0;
-        r.road.lanes_per_direction.Set(per, Provenance::kStated);
-        r.road.lanes_total.Set(total ? total : 2 * per + centre, total ? Provenance::kStated : Provenance::kInferred);
+        r.road.lanes_per_direction.Set(v1s_direction ? directional : per, Provenance::kStated);
+        if (v1s_direction && total < directional + per) {
+          r.road.lanes_total.Set(directional + per, Provenance::kInferred);  // V1's side wider than the other's
+        } else {
+          r.road.lanes_total.Set(total ? total : 2 * per + centre, total ? Provenance::kStated : Provenance::kInferred);
+        }
       } else if (total == 1 && Has(sentences[best->sentence].text, kTwoWay)) {
         // "a two way, one lane roadway": one lane each way.
         r.road.lanes_per_direction.Set(1, Provenance::kStated);
@@ -2256,7 +2308,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
   }
   if (!r.road.speed_limit_mps.known()) {
-    if (const auto mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known())) {
+    // The typical limit of V1's road as its own text describes it ("a
+    // 4-lane, 2-way urban road"), else as the scene does (which may describe
+    // only the other road: "a residential street that meets ...").
+    string v1_text;
+    for (const Segment& seg : segments) {
+      if (seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative) {
+        v1_text = BeforeTheTurn(seg.text);
+        break;
+      }
+    }
+    auto mph = TypicalLimitMph(v1_text, r.road.lanes_total.value, false);
+    if (!mph) mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known());
+    if (mph) {
       r.road.speed_limit_mps.Set(*mph * kMphToMps, Provenance::kInferred);
       r.road.speed_limit_unit.Set("mph", Provenance::kInferred);
     }

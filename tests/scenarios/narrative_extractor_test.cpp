@@ -315,6 +315,16 @@ TEST(NarrativeExtractorTest, UnpostedLimitFollowsTheRoadClassAndSize) {
   EXPECT_NEAR(limit_mph("V1 was traveling north on a two-lane urban street. V1 struck V2."), 30.0, 1e-9);
   EXPECT_NEAR(limit_mph("V1 was traveling south in the right lane of a limited access freeway. V2 struck V1."), 70.0,
               1e-9);
+  EXPECT_NEAR(limit_mph("V1 was traveling east in the eastbound lane of a three-lane, two-way suburban road. V2 was "
+                        "traveling west. The front of V2 struck the front of V1."),
+              45.0, 1e-9);
+  // V1's own road's class, not the other road's ("a residential street
+  // that meets the east-west road").
+  EXPECT_NEAR(limit_mph("V1 was traveling west in the right westbound lane of a four-lane, two-way urban road and was "
+                        "approaching a T-intersection. V2 was traveling south on a two-lane, two-way residential "
+                        "street that meets the east-west road from the north. The front of V1 struck the left side "
+                        "of V2."),
+              45.0, 1e-9);
 }
 
 TEST(NarrativeExtractorTest, WhatTheTextTellsLaterOfTheTimeBeforeTheTurnCounts) {
@@ -1846,6 +1856,36 @@ TEST(NarrativeExtractorTest, LeavingADriveOntoACountedRoadIsOnTheDrive) {
       "the end of the driveway and then pulled out to turn left. V2 was westbound in the curb lane. The front of V2 "
       "struck the left side of V1.");
   EXPECT_EQ(r.road.lanes_total.value, 2);
+}
+
+TEST(NarrativeExtractorTest, V1sOwnDirectionsCountAndTheRoadItsStopSignControls) {
+  // "giving three westbound lanes", V1 westbound: its side has 3, not the 2
+  // each way the sentence before counts.
+  const auto bay = kExtractor.Extract(
+      "The east/west roadway was a divided arterial with a raised median. Each direction had two through lanes; the "
+      "westbound approach also had a left-turn bay, giving three westbound lanes at the intersection. V1 was "
+      "westbound in the left-turn bay and stopped, waiting to turn left. V2 was eastbound in the inside through lane. "
+      "V1 began its turn and the front of V2 struck the right side of V1.");
+  EXPECT_EQ(bay.road.lanes_per_direction.value, 3);
+  EXPECT_EQ(bay.road.lanes_total.value, 5);
+  // "three southbound travel lanes" of a one-way southbound avenue: its total.
+  const auto avenue = kExtractor.Extract(
+      "The crash occurred at the intersection of a one-way southbound avenue and a two-way east/west street. The "
+      "avenue had three southbound travel lanes, and the street had one travel lane in each direction. V1 was stopped "
+      "for the red signal in the middle lane of the avenue. V2 was traveling eastbound on the street. V1 accelerated "
+      "into the intersection and the front of V2 impacted the right side of V1.");
+  EXPECT_TRUE(avenue.road.one_way.value);
+  EXPECT_EQ(avenue.road.lanes_total.value, 3);
+  // V1 stopped at the stop sign, and only the residential street has one:
+  // its lanes and limit, not the state route's (two sentences before).
+  const auto sign = kExtractor.Extract(
+      "This crash occurred at a T-intersection where a residential street ends at a four-lane state route. The state "
+      "route ran east/west with two lanes in each direction and a posted speed limit of 45 mph. The residential "
+      "street approached from the south, had one lane in each direction with a posted limit of 25 mph, and was "
+      "controlled by a stop sign. V1 stopped at the stop sign intending to turn left and travel west. V1 pulled out "
+      "and into lane two, where it was struck on the left side by the front of V2, which was traveling east.");
+  EXPECT_EQ(sign.road.lanes_total.value, 2);
+  EXPECT_NEAR(sign.road.speed_limit_mps.value * 3.6, 40.2, 0.5);
 }
 
 }  // namespace
