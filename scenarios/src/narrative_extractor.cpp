@@ -553,6 +553,7 @@ struct MovementEvidence {
   bool rolled_stop = false, no_stop = false;
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
   bool u_turn = false;
+  bool in_curve = false;  // "entered the right curve at too great a speed"
   bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
@@ -569,7 +570,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
   static const regex kNoStop(
-      R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\bran (?:the|a|through the) (?:stop|red)\b)");
+      R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
       R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
@@ -634,6 +635,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kBeside(R"(\blane to (?:the|v[1-9]'?s|his|her|its|their) (?:left|right)\b|\b(?:adjacent|next) lane\b)");
   if (Has(t, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   if (Has(t, kMerge)) e.merge = true;
+  static const regex kInCurve(R"(\b(?:entered|entering|negotiat\w+|rounding|round|into)\s+(?:the|a)\s+(?:[\w-]+\s+){0,2}?curve\b)");
+  if (Has(t, kInCurve)) e.in_curve = true;
   if (Has(t, kBack)) e.back = true;
   if (Has(t, kPass)) e.pass = true;
   if (Has(t, kSlow)) e.slowing = true;
@@ -727,7 +730,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     const Movement before = n.coded_straight ? Movement::kStraight : Movement::kChangingLanes;
     return MovementDecision{Movement::kChangingLanes, before, Provenance::kStated};
   }
-  if (e.merge) return both(Movement::kMerging, Provenance::kStated);
+  // One that lost it in the ramp's curve before the merge was negotiating
+  // the curve (NASS codes that, not the merge it never made).
+  if (e.merge) return MovementDecision{Movement::kMerging, e.in_curve ? Movement::kStraight : Movement::kMerging, Provenance::kStated};
   // A pass is preceded by going straight, coded or not: none of the 150
   // development vehicles is coded passing, the overtaker of crossing/21 is
   // coded going straight.
@@ -1572,12 +1577,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       break;
     }
   }
+  // CIREN case summaries code a vehicle that stopped and then turned by its
+  // turn (the development set's one such case, a car stopped in the mouth of
+  // a driveway waiting to turn left, is coded turning left); NMVCCS reports,
+  // which quote the coded critical events, code the stop.
+  static const regex kCaseSummary(R"(\bcase (?:vehicle|occupant)\b)");
+  const bool case_summary =
+      Has(norm, kCaseSummary) &&
+      std::none_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
     if ((narrative[i + 1].parked || statement[i + 1].parked) && !LeftParking(narrative[i + 1])) {
       v.parked.Set(true, Provenance::kStated);
     }
-    const MovementDecision d = DecideMovement(narrative[i + 1], statement[i + 1]);
+    MovementDecision d = DecideMovement(narrative[i + 1], statement[i + 1]);
+    const bool turned = d.manoeuvre == Movement::kTurnLeft || d.manoeuvre == Movement::kTurnRight;
+    if (case_summary && turned && d.pre_event == Movement::kStopped) d.pre_event = d.manoeuvre;
     v.movement.Set(d.manoeuvre, d.source);
     v.pre_event.Set(d.pre_event, d.source);
     if (v.parked.value) {
@@ -2654,6 +2669,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : type_src);
   if (a && b) {
     ReconcileDirections(r, static_cast<size_t>(a - r.vehicles.data()), static_cast<size_t>(b - r.vehicles.data()));
+  }
+  // A vehicle struck from behind while slowing in its lane is coded by the
+  // way it was going: the slowing is the striker's critical event ("other
+  // vehicle in lane, traveling in same direction while decelerating"), the
+  // development set's crossing/23 and straight/17. One slowing for its own
+  // turn is decelerating.
+  if (type == CrashType::kRearEnd && b && b->pre_event.value == Movement::kSlowing && !Turning(b->movement.value)) {
+    const size_t bi = static_cast<size_t>(b - r.vehicles.data());
+    if (!narrative[bi + 1].intent_left && !narrative[bi + 1].intent_right) {
+      r.vehicles[bi].pre_event.Set(Movement::kStraight, Provenance::kInferred);
+    }
   }
 
   // ---- Damaged planes, now that the configuration is known.

@@ -20,7 +20,7 @@ TEST(ExtractionEvalTest, ScoresTheDevelopmentSetOnSixAttributes) {
   EXPECT_EQ(s.n, 75);
   ASSERT_EQ(s.attributes.size(), 6u);
   ExpectAtLeast(s, {{"participant_count", 0.98}, {"speed_limit", 0.95}, {"lane_count", 0.95},
-                   {"collision_location", 0.93}, {"driving_actions", 0.84}, {"crash_type", 0.96}});
+                   {"collision_location", 0.93}, {"driving_actions", 0.86}, {"crash_type", 0.96}});
   for (const auto& a : ExtractionAttributes()) EXPECT_EQ(s.scored.at(a), 75) << a;
   EXPECT_EQ(s.group_sizes.size(), 3u);
   EXPECT_EQ(ToJson(s)["n"], 75);
@@ -45,16 +45,16 @@ TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
   EXPECT_EQ(s.n, 36);
   EXPECT_EQ(s.extra.count("impact_areas"), 0U);  // no row codes its events: nothing to score, no 0 %
   ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.94},
-                   {"collision_location", 0.97}, {"driving_actions", 0.94}, {"crash_type", 0.97}});
+                   {"collision_location", 0.97}, {"driving_actions", 0.91}, {"crash_type", 0.97}});
 }
 
 // Invented reports in the NMVCCS researchers' own style, ten sets by ten
 // hands, labelled in NASS terms without reading the rules; each was first
 // scored after the fixes for the sets before it (docs/extraction.md gives
 // every first look). Set A's labeller codes a turner or a lane changer by its
-// own manoeuvre, and D's and F's a lead vehicle braking for a light as
-// decelerating; the real NMVCCS coding, which the rules follow, mostly does
-// not, hence their lower driving-action floors.
+// own manoeuvre, and A's, B's, D's and F's a lead vehicle struck while braking
+// as decelerating; the real NMVCCS coding, which the rules follow, does not
+// (crossing/23, straight/17), hence their lower driving-action floors.
 TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
   struct Set {
     const char* dir;
@@ -64,10 +64,10 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
   const Set sets[] = {
       {"nmvccs_style", 45,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
-        {"collision_location", 0.97}, {"driving_actions", 0.84}, {"crash_type", 0.95}}},
+        {"collision_location", 0.97}, {"driving_actions", 0.82}, {"crash_type", 0.95}}},
       {"nmvccs_style_b", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
-        {"collision_location", 0.97}, {"driving_actions", 0.95}, {"crash_type", 0.97}}},
+        {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.97}}},
       {"nmvccs_style_c", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.92}, {"lane_count", 0.97},
         {"collision_location", 0.92}, {"driving_actions", 0.90}, {"crash_type", 0.95}}},
@@ -95,6 +95,9 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_m", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.90},
         {"collision_location", 0.95}, {"driving_actions", 0.78}, {"crash_type", 0.87}}},
+      {"nmvccs_style_q", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.92},
+        {"collision_location", 0.95}, {"driving_actions", 0.85}, {"crash_type", 0.97}}},
       {"nmvccs_style_n", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.97},
         {"collision_location", 0.95}, {"driving_actions", 0.83}, {"crash_type", 0.97}}},
@@ -109,15 +112,22 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
 }
 
 // Invented CIREN case summaries in the CIREN layout (limits often unstated,
-// as in the real ones: the floor on speed limit is the prior's).
+// as in the real ones: the floor on speed limit is the prior's). K's labeller
+// codes a case vehicle that stopped and then turned as stopped, the NMVCCS
+// habit; the real CIREN coding, which the rules follow, codes its turn
+// (119489), hence K's lower driving-action floor.
 TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
+  const std::map<std::string, double> floors = {{"participant_count", 0.97}, {"speed_limit", 0.78},
+                                                {"lane_count", 0.95},        {"collision_location", 0.95},
+                                                {"driving_actions", 0.90},   {"crash_type", 0.92}};
   for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});
     EXPECT_EQ(s.n, 30);
-    ExpectAtLeast(s, {{"participant_count", 0.97}, {"speed_limit", 0.78}, {"lane_count", 0.95},
-                     {"collision_location", 0.95}, {"driving_actions", 0.82}, {"crash_type", 0.92}});
+    auto own = floors;
+    if (std::string(dir) == "ciren_style_k") own["driving_actions"] = 0.60;
+    ExpectAtLeast(s, own);
   }
 }
 

@@ -1888,5 +1888,55 @@ TEST(NarrativeExtractorTest, V1sOwnDirectionsCountAndTheRoadItsStopSignControls)
   EXPECT_NEAR(sign.road.speed_limit_mps.value * 3.6, 40.2, 0.5);
 }
 
+TEST(NarrativeExtractorTest, CaseSummariesCodeAStopThenTurnByTheTurn) {
+  // A CIREN case summary: the stop before the turn is not what is coded.
+  const auto summary = kExtractor.Extract(
+      "Vehicle one (V1 - case vehicle), a 1999 Chevrolet Malibu, 4-door sedan was stopped in the mouth of a "
+      "commercial driveway facing west, waiting to make a left turn onto a north-south two-lane, two-way road. "
+      "Vehicle two (V2), a 2003 Saturn Ion, 4-door sedan was traveling north in the northbound lane. The driver of V1 "
+      "began to enter the roadway with the intention of turning left and the front of V2 struck the left side of V1. "
+      "The 88-year-old female driver of V1 (case occupant) was using the available three-point seat belt.");
+  ASSERT_EQ(summary.vehicles.size(), 2u);
+  EXPECT_EQ(summary.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(summary.vehicles[0].pre_event.value, Movement::kTurnLeft);
+  // An NMVCCS report quoting the coded critical event codes the stop.
+  const auto report = kExtractor.Extract(
+      "V1, a 1999 Chevrolet Malibu, was stopped in the mouth of a commercial driveway facing west, waiting to make a "
+      "left turn onto a north-south two-lane, two-way road. V2, a 2003 Saturn Ion, was traveling north in the "
+      "northbound lane. The driver of V1 began to enter the roadway with the intention of turning left and the front "
+      "of V2 struck the left side of V1. The Critical Precrash Event for V1 was this vehicle traveling, turning left "
+      "at intersection.");
+  ASSERT_EQ(report.vehicles.size(), 2u);
+  EXPECT_EQ(report.vehicles[0].pre_event.value, Movement::kStopped);
+}
+
+TEST(NarrativeExtractorTest, NotStoppedAndSlowingLeadsAndRampCurves) {
+  // "had not stopped" is no stop.
+  const auto ran = kExtractor.Extract(
+      "V1 was traveling east on a two-lane road. V2 was traveling north toward the stop sign and did not slow down. "
+      "The front of V1 struck the left side of V2. The driver of V2 had not stopped.");
+  ASSERT_EQ(ran.vehicles.size(), 2u);
+  EXPECT_EQ(ran.vehicles[1].pre_event.value, Movement::kStraight);
+  // A lead struck from behind while slowing is coded going straight; its
+  // path into the crash is still the slowing.
+  const auto lead = kExtractor.Extract(
+      "V1 was traveling east behind V2 on a two-lane road. V2 slowed for traffic ahead that was turning into a "
+      "driveway. The front of V1 struck the back of V2.");
+  ASSERT_EQ(lead.vehicles.size(), 2u);
+  EXPECT_EQ(lead.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(lead.vehicles[1].movement.value, Movement::kSlowing);
+  EXPECT_EQ(lead.vehicles[1].pre_event.value, Movement::kStraight);
+  // Lost in the entrance ramp's curve before the merge: negotiating the
+  // curve, not merging, before the critical event.
+  const auto ramp = kExtractor.Extract(
+      "Vehicle one (V1 - case vehicle), a 2001 Pontiac Sunfire, was traveling on a one-lane entrance ramp that curves "
+      "to the left to join the southbound lanes of a freeway. Vehicle two (V2) was traveling south in the right lane "
+      "of the freeway. The driver of V1 entered the left curve at too great a speed and lost control, and V1 slid "
+      "into the right southbound lane, where the front of V2 struck the right side of V1.");
+  ASSERT_EQ(ramp.vehicles.size(), 2u);
+  EXPECT_EQ(ramp.vehicles[0].movement.value, Movement::kMerging);
+  EXPECT_EQ(ramp.vehicles[0].pre_event.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
