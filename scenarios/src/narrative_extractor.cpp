@@ -370,7 +370,9 @@ std::vector<string> SplitSentences(const string& s) {
         const string word = cur.substr(w);
         // A letter ending a hyphenated model ("the cr-v. both ...") is no initial.
         const bool initial = word.size() == 1 && (w == 0 || cur[w - 1] != '-');
-        if (kAbbrev.count(word) || initial) {
+        // Dotted initials ("a divided u.s. route", "the u.s.a.").
+        static const regex kInitials(R"(^(?:[a-z]\.)+[a-z]$)");
+        if (kAbbrev.count(word) || initial || Has(word, kInitials)) {
           cur += c;
           continue;
         }
@@ -911,6 +913,19 @@ class RoadNames {
   }
 
   bool Mentioned(const string& t) const { return !names_.empty() && Has(t, pattern_); }
+
+  // The named road a count's own noun phrase ends in ("2-lane township
+  // road", "a 2-lane, 2-way kessler lane"): its words follow the count with
+  // no other clause between.
+  string Modified(const string& after) const {
+    if (names_.empty()) return {};
+    smatch m;
+    const string head = after.substr(0, 40);
+    if (!std::regex_search(head, m, pattern_)) return {};
+    static const regex kClauseBreak(R"(\b(?:and|or|with|of|at|on|to|from|near|that|which|where)\b|[;:(])");
+    if (Has(head.substr(0, static_cast<size_t>(m.position())), kClauseBreak)) return {};
+    return Resolve(m[1].str());
+  }
 
   // The named road a vehicle's text puts it on ("was westbound on route 9").
   string TravelledOn(const string& t) const {
@@ -1778,7 +1793,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         smatch rw;
         if (std::regex_search(phrase_after, rw, kRoadWord)) phrase_after = phrase_after.substr(0, static_cast<size_t>(rw.position()));
         rs.centre = Has(s.text.substr(start, pos - start) + " " + phrase_after, kCentreLane);
-        rs.name = named_at(i, pos);
+        rs.name = road_names.Modified(s.text.substr(pos));
+        if (rs.name.empty()) rs.name = named_at(i, pos);
         rs.road = SubjectRoad(s.text, pos);
         rs.total = total;
         rs.per_direction = per_dir;
@@ -2085,6 +2101,20 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);
       const size_t next = phrase.find(" and ", at - from + static_cast<size_t>(dm.length()));
       if (next != string::npos) phrase = phrase.substr(0, next);
+      // "a 4-lane divided u.s. route and a 2-lane township road", V1 on the
+      // township road: the phrase names another road than V1's named one
+      // (unless in apposition to it: "route 9, a divided highway").
+      if (!v1_named_road.empty()) {
+        static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
+        const size_t name_at = cleaned.find(v1_named_road);
+        if (name_at != string::npos && Has(phrase, kRoadWord)) {
+          const size_t name_end = name_at + v1_named_road.size();
+          const bool in_phrase = name_at >= from && name_at < from + phrase.size();
+          static const regex kApposition(R"(^\s*,\s*$)");
+          const bool appositive = name_end <= from && Has(cleaned.substr(name_end, from - name_end), kApposition);
+          if (!in_phrase && !appositive) return false;
+        }
+      }
       std::optional<int> axis = AxisIn(phrase);
       if (!axis) axis = AxisIn(s.text);
       return !(at_junction && v1_axis >= 0 && axis && *axis != v1_axis);

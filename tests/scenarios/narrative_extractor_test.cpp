@@ -1938,5 +1938,24 @@ TEST(NarrativeExtractorTest, NotStoppedAndSlowingLeadsAndRampCurves) {
   EXPECT_EQ(ramp.vehicles[0].pre_event.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, TheOtherNamedRoadsDivisionAndDottedInitials) {
+  // "a four-lane divided US route and a two-lane township road", V1 on the
+  // township road: the division and the four lanes are the route's.
+  const auto named = kExtractor.Extract(
+      "This crash occurred at the intersection of a four-lane divided US route and a two-lane township road. V1 was "
+      "northbound on the township road and stopped at the stop sign. V2 was eastbound in lane two. V1 pulled away "
+      "from the stop sign and the front of V2 struck the left side of V1.");
+  EXPECT_FALSE(named.road.divided.value);
+  EXPECT_EQ(named.road.lanes_total.value, 2);
+  // "U.S." ends no sentence.
+  const auto dotted = kExtractor.Extract(
+      "This crash occurred at the intersection of a four-lane divided U.S. route and a two-lane township road. The "
+      "township road was a two-lane, two-way roadway and was controlled by stop signs. V1 was northbound on the "
+      "township road and stopped at the stop sign. V2 was eastbound in lane two. V1 pulled away from the stop sign "
+      "and the front of V2 struck the left side of V1.");
+  EXPECT_FALSE(dotted.road.divided.value);
+  EXPECT_EQ(dotted.road.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
