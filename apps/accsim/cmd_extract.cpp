@@ -5,10 +5,12 @@
 #include <iterator>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "accsim/scenarios/extraction_eval.h"
 #include "accsim/scenarios/llm_extractor.h"
 #include "accsim/scenarios/narrative_extractor.h"
+#include "accsim/scenarios/narrative_rewrites.h"
 #include "commands.h"
 
 namespace accsim::cli {
@@ -74,6 +76,7 @@ void AddExtractCommands(CLI::App& app) {
     std::string dir;
     bool json = false;
     bool verbose = false;
+    std::string rewrite;
     BackendOptions backend;
   };
   auto o = std::make_shared<EvalOptions>();
@@ -87,9 +90,23 @@ void AddExtractCommands(CLI::App& app) {
   eval->add_flag("--json", o->json,
                  "Print JSON: {\"attributes\": {...}, \"n\": N, \"scored\": {...}, \"extra\": {...}, \"groups\": {...}}");
   eval->add_flag("--verbose", o->verbose, "List every mismatch (case: attribute: want X, got Y)");
+  std::string rewrites = "Rewrite each narrative first, keeping its facts, to check that the score does not hang on "
+                         "one writer's wording:";
+  std::vector<std::string> names;
+  for (const auto& r : NarrativeRewrites()) {
+    rewrites += "\n  " + r.name + ": " + r.description;
+    names.push_back(r.name);
+  }
+  eval->add_option("--rewrite", o->rewrite, rewrites)->check(CLI::IsMember(names));
   AddBackendOptions(eval, o->backend);
   eval->callback([o] {
-    const ExtractionScore s = EvaluateExtraction(o->dir, MakeExtractor(o->backend));
+    ExtractFn read = MakeExtractor(o->backend);
+    if (!o->rewrite.empty()) {
+      read = [plain = std::move(read), name = o->rewrite](std::string_view t) {
+        return plain(RewriteNarrative(t, name));
+      };
+    }
+    const ExtractionScore s = EvaluateExtraction(o->dir, read);
     if (o->json) {
       std::cout << ToJson(s).dump(2) << "\n";
       return;

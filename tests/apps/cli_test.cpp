@@ -93,6 +93,18 @@ TEST(CliTest, BadInputGetsAClearErrorAndExitCode) {
   EXPECT_NE(r.out.find("/no/such/file.json"), std::string::npos) << r.out;
 }
 
+TEST(CliTest, EvalExtractionThroughARewriteScoresTheSame) {
+  const std::string dir = std::string(ACCSIM_SOURCE_DIR) + "/tests/data/report_styles";
+  const Result plain = RunCli("eval-extraction " + dir + " --json");
+  const Result upper = RunCli("eval-extraction " + dir + " --json --rewrite upper");
+  ASSERT_EQ(plain.status, 0) << plain.out;
+  ASSERT_EQ(upper.status, 0) << upper.out;
+  EXPECT_EQ(nlohmann::json::parse(upper.out)["attributes"], nlohmann::json::parse(plain.out)["attributes"]);
+  const Result bad = RunCli("eval-extraction " + dir + " --rewrite pig-latin");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--rewrite"), std::string::npos) << bad.out;
+}
+
 TEST(CliTest, SweepReconstructionPrintsRatesAndRefusesZeroSeeds) {
   Result r = RunCli("sweep-reconstruction --seeds 1");
   ASSERT_EQ(r.status, 0) << r.out;
