@@ -527,6 +527,7 @@ struct RoadStatement {
   bool centre = false;             // its phrase adds a centre lane ("... separated by a 2-way left-turn lane")
   string name;                     // the named road its clause is about ("route 202 is ... with 1 lane each way")
   string road;                     // the road its clause is about by kind ("the residential street was a 2-lane ...")
+  string counted;                  // the road its own noun phrase names ("a 2-lane collector road")
 };
 
 std::optional<int> AxisIn(const string& s) {
@@ -1791,7 +1792,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
         string phrase_after = s.text.substr(pos + static_cast<size_t>(m.length(0)));
         smatch rw;
-        if (std::regex_search(phrase_after, rw, kRoadWord)) phrase_after = phrase_after.substr(0, static_cast<size_t>(rw.position()));
+        if (std::regex_search(phrase_after, rw, kRoadWord)) {
+          const size_t at = static_cast<size_t>(rw.position());
+          const string noun = rw[1].str();
+          phrase_after = phrase_after.substr(0, at);
+          static const regex kPhraseBreak(R"(\b(?:and|or|with|of|in|on|at|to|for|from|each|per)\b|[;:(])");
+          if (at <= 30 && !Has(phrase_after, kPhraseBreak)) rs.counted = noun;
+        }
         rs.centre = Has(s.text.substr(start, pos - start) + " " + phrase_after, kCentreLane);
         rs.name = road_names.Modified(s.text.substr(pos));
         if (rs.name.empty()) rs.name = named_at(i, pos);
@@ -1894,7 +1901,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // V1's road: stated in V1's own segment, else the road on V1's axis, else
     // the first road not tied to another vehicle (the crash road is
     // described first).
+    // The road V1 turns onto ("waiting to turn left onto the collector
+    // road") is not the one it was on: a count of that road comes last.
+    string v1_onto;
+    for (const Segment& seg : segments) {
+      static const regex kOnto(R"(\bonto\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
+      smatch om;
+      if (seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative &&
+          std::regex_search(seg.text, om, kOnto)) {
+        v1_onto = om[1].str();
+        break;
+      }
+    }
     auto pick = [&](auto pred) -> const RoadStatement* {
+      for (const auto& rs : roads) {
+        if (pred(rs) && (v1_onto.empty() || rs.counted != v1_onto)) return &rs;
+      }
       for (const auto& rs : roads) {
         if (pred(rs)) return &rs;
       }
@@ -1975,7 +1997,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // ACCSIM_DEBUG_ROADS=1 lists every lane statement on stderr and marks
     // the one taken for V1's road.
     if (std::getenv("ACCSIM_DEBUG_ROADS")) {
-      for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d road '%s']%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, rs.road.c_str(), &rs == best ? " <- best" : "");
+      for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d road '%s' counted '%s']%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, rs.road.c_str(), rs.counted.c_str(), &rs == best ? " <- best" : "");
+      std::fprintf(stderr, "[v1 turns onto: %s]\n", v1_onto.c_str());
     }
     if (best) {
       // Combine statements about the same road (a total in one sentence, the
@@ -2032,6 +2055,21 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // "2 through lanes in each direction separated by a continuous
         // two-way left-turn lane": the centre lane is a fifth.
         const int centre = best->centre ? 1 : 0;
+        // "2 through lanes in each direction ..., with a left-turn lane for
+        // southbound traffic", V1 southbound: its side has the bay too.
+        static const regex kBayOfOneDirection(
+            R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+for\s+(north|south|east|west)bound\s+traffic\b|\b(?:a|an|1)\s+(north|south|east|west)bound\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b)");
+        smatch bm;
+        const string& per_sentence = sentences[best->sentence].text;
+        if (!v1s_direction && !best->centre && v1_dir >= 0 &&
+            std::regex_search(per_sentence.cbegin() + static_cast<std::ptrdiff_t>(std::min(best->pos, per_sentence.size())),
+                              per_sentence.cend(), bm, kBayOfOneDirection)) {
+          const auto bay_dir = CompassWord(bm[1].matched ? bm[1].str() : bm[2].str());
+          if (bay_dir && static_cast<int>(*bay_dir) == v1_dir) {
+            directional = per + 1;
+            v1s_direction = true;
+          }
+        }
         r.road.lanes_per_direction.Set(v1s_direction ? directional : per, Provenance::kStated);
         if (v1s_direction && total < directional + per) {
           r.road.lanes_total.Set(directional + per, Provenance::kInferred);  // V1's side wider than the other's

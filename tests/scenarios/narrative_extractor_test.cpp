@@ -1957,5 +1957,26 @@ TEST(NarrativeExtractorTest, TheOtherNamedRoadsDivisionAndDottedInitials) {
   EXPECT_EQ(dotted.road.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, TheRoadTurnedOntoAndOneDirectionsBay) {
+  // "waiting to turn left onto the collector road": the two lanes counted
+  // for the collector road are not V1's.
+  const auto onto = kExtractor.Extract(
+      "The crash occurred at a four-leg intersection of a divided highway and a two-lane collector road. The highway "
+      "had a grass median approximately 12 meters wide. Each direction of the highway had two through lanes and a "
+      "left turn lane at the intersection. V1 was traveling south in the left turn lane and had stopped at the stop "
+      "line waiting to turn left onto the collector road. V2 was traveling north. V1 began its left turn and was "
+      "struck in the right side by the front of V2.");
+  EXPECT_EQ(onto.road.lanes_per_direction.value, 3);
+  // "... two through lanes in each direction, with a left-turn lane for
+  // southbound traffic", V1 southbound: three on its side.
+  const auto bay = kExtractor.Extract(
+      "The highway ran north/south and had two through lanes in each direction, separated by a raised grass median, "
+      "with a left-turn lane for southbound traffic at the intersection. V1 was stopped in the southbound left-turn "
+      "lane, waiting to turn left. V2 was traveling north in lane two. V1 began its left turn and its right side was "
+      "struck by the front of V2.");
+  EXPECT_EQ(bay.road.lanes_per_direction.value, 3);
+  EXPECT_EQ(bay.road.lanes_total.value, 5);
+}
+
 }  // namespace
 }  // namespace accsim
