@@ -1711,13 +1711,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   {
     // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
-        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
+        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     // "each direction of route 30 has 2 through lanes plus a left-turn bay",
     // "a grass median and, in each direction, 2 through lanes and a left-turn lane".
     static const regex kEachHas(
-        R"((?:\beach direction\b[^.;]{0,30}?\b(?:has|had)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
+        R"((?:\beach direction\b[^.;]{0,30}?\b(?:has|had)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
     static const regex kDirectional(
-        R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:travel\s+|through\s+)?lanes?)?\b|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
+        R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|travel\s+|through\s+)?lanes?\b|(?=\s*(?:[,;.)]|and\b|$)))|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(
         R"(\b(\d)[- ](?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
     static const regex kOneWayHere(R"(\boneway\b)");
@@ -1817,6 +1817,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
            ++it) {
         const auto& m = *it;
+        // "crossed the 2 eastbound lanes" is not a road's count.
+        static const regex kCrossedBefore(R"(\b(?:crossing|crossed|crosses|across|over)\s+(?:the\s+|both\s+)?$)");
+        if (Has(Before(s.text, static_cast<size_t>(m.position()), 15), kCrossedBefore)) continue;
         const int n = std::stoi(m[1].matched ? m[1].str() : m[2].matched ? m[2].str() : m[3].str());
         const std::optional<Compass> bound = DirectionIn(m.str());
         if (one_way_bound(bound)) {
@@ -1913,9 +1916,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         break;
       }
     }
+    // Compared by the head noun: "the cross street" V1 turns onto is the
+    // "2-lane east-west street".
+    auto head = [](const string& road) { return road.substr(road.rfind(' ') == string::npos ? 0 : road.rfind(' ') + 1); };
+    auto counts_road_turned_onto = [&](const RoadStatement& rs) {
+      return !v1_onto.empty() && !rs.counted.empty() && (rs.counted == v1_onto || head(rs.counted) == head(v1_onto));
+    };
     auto pick = [&](auto pred) -> const RoadStatement* {
       for (const auto& rs : roads) {
-        if (pred(rs) && (v1_onto.empty() || rs.counted != v1_onto)) return &rs;
+        if (pred(rs) && !counts_road_turned_onto(rs)) return &rs;
       }
       for (const auto& rs : roads) {
         if (pred(rs)) return &rs;

@@ -1978,5 +1978,34 @@ TEST(NarrativeExtractorTest, TheRoadTurnedOntoAndOneDirectionsBay) {
   EXPECT_EQ(bay.road.lanes_total.value, 5);
 }
 
+TEST(NarrativeExtractorTest, CarsCrossedLanesAndExclusiveBaysAreNotMiscounted) {
+  // "three westbound cars went by" counts cars, not lanes.
+  const auto cars = kExtractor.Extract(
+      "The crash occurred on State Route 9, a two-lane rural highway with one lane in each direction. Vehicle 1, a "
+      "2006 Nissan Altima, was eastbound behind Vehicle 2. The front of Vehicle 1 struck the back of Vehicle 2. He "
+      "stated that he had been stopped with his signal on for \"maybe ten seconds\" while three westbound cars went "
+      "by.");
+  EXPECT_EQ(cars.road.lanes_total.value, 2);
+  // "Vehicle 1 crossed the two eastbound lanes" of the highway it then
+  // turned onto: not its own road's count.
+  const auto crossed = kExtractor.Extract(
+      "This crash occurred at a four-leg rural intersection of a four-lane undivided state highway and a two-lane "
+      "township road. The highway ran east-west with two lanes in each direction. Vehicle 1 was northbound on the "
+      "township road and stopped at the stop sign intending to turn left. Vehicle 2 was westbound in the left lane "
+      "of the highway. After stopping, Vehicle 1 crossed the two eastbound lanes and began to turn into the westbound "
+      "lanes, where the front of Vehicle 2 struck the right side of Vehicle 1.");
+  EXPECT_EQ(crossed.road.lanes_total.value, 2);
+  EXPECT_EQ(crossed.road.lanes_per_direction.value, 1);
+  // "two through lanes plus an exclusive left-turn lane" each way; V1 turns
+  // onto "the cross street", the "two-lane east-west street".
+  const auto exclusive = kExtractor.Extract(
+      "The crash occurred at a signalized four-leg intersection of a north-south divided highway and a two-lane "
+      "east-west street. The highway was divided by a raised grass median. Each direction of the highway had two "
+      "through lanes plus an exclusive left-turn lane at the intersection. The posted speed limit on the highway was "
+      "45 mph. V1 was northbound in the left-turn lane intending to turn left onto the cross street. V2 was "
+      "southbound. V1 turned left and the front of V2 struck the right side of V1.");
+  EXPECT_EQ(exclusive.road.lanes_per_direction.value, 3);
+}
+
 }  // namespace
 }  // namespace accsim
