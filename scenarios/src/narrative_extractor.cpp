@@ -2035,6 +2035,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           continue;
         }
         if (rs.sentence > best->sentence + 1 || rs.sentence + 1 < best->sentence) continue;
+        if (!best->axis && rs.axis && v1_axis >= 0 && *rs.axis != v1_axis) continue;  // a road across V1's course
         if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
         if (!total && rs.total) total = rs.total;
         if (!per && rs.per_direction) per = rs.per_direction;
