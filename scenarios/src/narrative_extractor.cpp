@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "regex_text.h"
+
 namespace accsim {
 namespace {
 
@@ -27,23 +29,11 @@ using std::regex;
 using std::smatch;
 using std::string;
 
-bool Has(const string& s, const regex& re) { return std::regex_search(s, re); }
+using regex_text::Has;
+using regex_text::ReplaceWith;
 
 // The (at most) n characters of s before position at.
 string Before(const string& s, size_t at, size_t n) { return at > n ? s.substr(at - n, n) : s.substr(0, at); }
-
-// regex_replace with a callback (std::regex has none).
-string ReplaceWith(const string& s, const regex& re, const std::function<string(const smatch&)>& fn) {
-  string out;
-  auto begin = s.cbegin();
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), re); it != std::sregex_iterator(); ++it) {
-    out.append(begin, (*it)[0].first);
-    out += fn(*it);
-    begin = (*it)[0].second;
-  }
-  out.append(begin, s.cend());
-  return out;
-}
 
 int NumberWord(const string& w) {
   static const std::map<string, int> kWords = {

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "regex_text.h"
+
 namespace accsim {
 namespace {
 
@@ -24,19 +26,7 @@ int NumberOfWord(string w) {
   return -1;
 }
 
-// Replaces each match of `re` in `s` by `f(match)`.
-template <typename F>
-string ReplaceWith(const string& s, const regex& re, F f) {
-  string out;
-  auto last = s.cbegin();
-  for (auto it = std::sregex_iterator(s.cbegin(), s.cend(), re); it != std::sregex_iterator(); ++it) {
-    out.append(last, (*it)[0].first);
-    out += f(*it);
-    last = (*it)[0].second;
-  }
-  out.append(last, s.cend());
-  return out;
-}
+using regex_text::ReplaceWith;
 
 string VehicleWords(const string& s) {
   static const regex kV(R"(\bV([1-8])\b)");
