@@ -1352,6 +1352,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
            it != std::sregex_iterator(); ++it) {
         const size_t at = static_cast<size_t>(it->position()) + skip;
         if (Has(Before(t, at, 20), kTowing)) continue;
+        // "did not see any traffic", "saw no other vehicles": nobody there.
+        static const regex kNobody(R"(\b(?:any|no)\s+$)");
+        if (Has(Before(t, at, 6), kNobody)) continue;
         t = t.substr(0, at);
         break;
       }

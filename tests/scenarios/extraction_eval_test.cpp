@@ -104,6 +104,9 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_t", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.92},
         {"collision_location", 0.95}, {"driving_actions", 0.85}, {"crash_type", 0.97}}},
+      {"nmvccs_style_u", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.95},
+        {"collision_location", 0.95}, {"driving_actions", 0.89}, {"crash_type", 0.95}}},
       {"nmvccs_style_n", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.97},
         {"collision_location", 0.95}, {"driving_actions", 0.83}, {"crash_type", 0.97}}},
@@ -126,7 +129,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
   const std::map<std::string, double> floors = {{"participant_count", 0.97}, {"speed_limit", 0.78},
                                                 {"lane_count", 0.95},        {"collision_location", 0.95},
                                                 {"driving_actions", 0.90},   {"crash_type", 0.92}};
-  for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r"}) {
+  for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});

@@ -2007,5 +2007,19 @@ TEST(NarrativeExtractorTest, CarsCrossedLanesAndExclusiveBaysAreNotMiscounted) {
   EXPECT_EQ(exclusive.road.lanes_per_direction.value, 3);
 }
 
+TEST(NarrativeExtractorTest, NoTrafficIsNobody) {
+  // "did not see any traffic, and began her left turn": the clause after
+  // "any traffic" is still the driver's own.
+  const auto r = kExtractor.Extract(
+      "Vehicle one (V1 - case vehicle), a 2000 Mercury Grand Marquis, 4-door sedan was traveling east on a two-lane, "
+      "two-way road and had stopped at a stop sign at a four-leg intersection with a state highway. Vehicle two (V2), "
+      "a 2005 Jeep Liberty, was traveling south on the state highway. The driver of V1 stated that she looked to her "
+      "left, did not see any traffic, and began her left turn to travel north. The front of V2 struck the left side "
+      "of V1. The driver of V1 (case occupant) was belted.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
+}
+
 }  // namespace
 }  // namespace accsim
