@@ -1836,11 +1836,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
         // ("2 through lanes and a left-turn bay").
         static const regex kDirectionSubject(
-            R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+            R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
         static const regex kBayAfter(R"(^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
         const int n = std::stoi((*it)[1].str());
         smatch dm;
-        const string near_before = before.substr(before.size() > 60 ? before.size() - 60 : 0);
+        const string near_before = before.substr(before.size() > 120 ? before.size() - 120 : 0);
         if (std::regex_search(near_before, dm, kDirectionSubject)) {
           // ... unless that direction's road is one-way ("a northbound
           // one-way roadway and a westbound one-way roadway. the northbound
@@ -1853,7 +1853,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           } else {
             // ... and a turn lane told before the count ("the southbound
             // approach had a left-turn lane and 2 through lanes").
-            static const regex kBayBefore(R"(\bturn\s+(?:lane|bay)\s+(?:and|plus)\s+$)");
+            // ... or after ("had a left-turn lane ... in addition to its 2
+            // through lanes").
+            static const regex kBayBefore(
+                R"(\bturn\s+(?:lane|bay)\s+(?:and|plus)\s+$|\bturn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+$)");
             const bool bay = Has(after, kBayAfter) || Has(subject, kBayBefore);
             add(*it, static_cast<size_t>(it->position()), 0, 0, n + (bay ? 1 : 0));
             roads.back().bound = bound;

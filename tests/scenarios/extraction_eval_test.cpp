@@ -102,7 +102,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
        {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.92}}},
       {"nmvccs_style_t", 40,
-       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.92},
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.95},
         {"collision_location", 0.95}, {"driving_actions", 0.85}, {"crash_type", 0.97}}},
       {"nmvccs_style_u", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.95},

@@ -2021,5 +2021,19 @@ TEST(NarrativeExtractorTest, NoTrafficIsNobody) {
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
 }
 
+TEST(NarrativeExtractorTest, ABayInAdditionToTheThroughLanes) {
+  // "The southbound side had a left-turn lane ... in addition to its two
+  // through lanes", V1 southbound: three on its side.
+  const auto r = kExtractor.Extract(
+      "The crash occurred at the intersection of Route 1 and Quarry Road. Route 1 was a four-lane divided highway, "
+      "two lanes in each direction, separated by a 15-meter grass median with an opening at the intersection. The "
+      "southbound side had a left-turn lane leading into the median opening in addition to its two through lanes. "
+      "Quarry Road was a two-lane road entering from the east and was controlled by a stop sign. V1 was southbound "
+      "in the left-turn lane and stopped at the end of the lane, intending to turn left onto Quarry Road. V2 was "
+      "northbound. V1 began its turn and the front of V2 struck the right side of V1.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 3);
+}
+
 }  // namespace
 }  // namespace accsim
