@@ -54,7 +54,7 @@ fuzz: deps
 	  -DACCSIM_BUILD_FUZZ=ON -DACCSIM_BUILD_TESTS=OFF -DACCSIM_BUILD_BENCH=OFF -DACCSIM_BUILD_PYTHON=OFF > /dev/null
 	@cmake --build $(FUZZ_DIR) --target accsim_fuzz_extractor -j $(JOBS)
 	@mkdir -p $(FUZZ_DIR)/corpus && cp scenarios/examples/*.json $(FUZZ_DIR)/corpus/ 2>/dev/null || true
-	@$(FUZZ_DIR)/bin/accsim_fuzz_extractor -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 $(FUZZ_DIR)/corpus
+	@$(FUZZ_DIR)/bin/accsim_fuzz_extractor -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 $(FUZZ_DIR)/corpus fuzz/corpus
 
 clean:
 	rm -rf $(BUILD_DIR) $(SAN_DIR) $(FUZZ_DIR)

@@ -2332,7 +2332,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         found = true;
       }
       smatch m;
-      if (!found && std::regex_search(s.text, m, kBare)) {
+      // ... a bare number only when it could be a limit in mph ("limit: 00" is none).
+      if (!found && std::regex_search(s.text, m, kBare) && std::stod(m[1].str()) >= 5 && std::stod(m[1].str()) <= 110) {
         const size_t at = static_cast<size_t>(m.position());
         limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, at),
                           inherited_axis(static_cast<size_t>(&s - sentences.data()), AxisIn(s.text.substr(0, at))),

@@ -83,12 +83,13 @@ TEST(NarrativeExtractorTest, BadInputNeverThrowsAndSaysWhatWasDefaulted) {
   for (const std::string& text :
        {std::string(""), std::string("   \n\t "), std::string("The weather was nice and we had lunch."),
         std::string("El vehiculo uno choco contra el vehiculo dos en la interseccion."),
-        std::string("\x00\x01\xff\xfe binary \x80", 14)}) {
+        std::string("\x00\x01\xff\xfe binary \x80", 14), std::string("{\"limit\": 00. \"stopped_car\"}")}) {
     AccidentRecord r;
     ASSERT_NO_THROW(r = kExtractor.Extract(text)) << text;
     EXPECT_FALSE(r.warnings.empty()) << text;
     EXPECT_EQ(r.crash.striking.source, Provenance::kDefaulted);
     EXPECT_NO_THROW(ToJson(r).dump());
+    EXPECT_NO_THROW(AccidentRecordFromJson(ToJson(r))) << text;  // "limit: 00" is no limit of 0
   }
   std::mt19937_64 rng(1);
   std::string junk(100000, ' ');
