@@ -86,35 +86,25 @@ string Normalise(std::string_view in) {
   static const regex kLimitSynonym(
       R"(\b(?:maximum|max\.?)\s+(?:legal\s+|allowed\s+|allowable\s+|permitted\s+|posted\s+)?speed(?:\s+(?:allowed|permitted|limit))?\b|\b(?:legal|lawful)\s+speed(?:\s+limit)?\b)");
   s = std::regex_replace(s, kLimitSynonym, "speed limit");
-  // Police abbreviations, whole words only: "nb on elm st", "a 4 ln rdwy".
-  static const std::array<std::pair<regex, const char*>, 9> kAbbreviations = {{
-      {regex(R"(\bnb\b)"), "northbound"},
-      {regex(R"(\bsb\b)"), "southbound"},
-      {regex(R"(\beb\b)"), "eastbound"},
-      {regex(R"(\bwb\b)"), "westbound"},
-      {regex(R"(\blns\b)"), "lanes"},
-      {regex(R"(\bln\b)"), "lane"},
-      {regex(R"(\brdwy\b)"), "roadway"},
-      {regex(R"(\b(?:intx|intersec)\b)"), "intersection"},
-      {regex(R"(\bhwy\b)"), "highway"},
-  }};
-  s = ReplaceEach(s, kAbbreviations);
-  // Present tense, as police narratives often write it ("v1 is traveling
-  // north ... v2 has been stopped ... the front of v1 strikes"): the rules
-  // read the investigators' past tense.
-  static const std::array<std::pair<regex, const char*>, 10> kPresentTense = {{
-      {regex(R"(\bis\b)"), "was"},
-      {regex(R"(\bare\b)"), "were"},
-      {regex(R"(\b(?:has|have)\b)"), "had"},
-      {regex(R"(\bdoes\b)"), "did"},
-      {regex(R"(\bstrikes\b)"), "struck"},
-      {regex(R"(\bimpacts\b)"), "impacted"},
-      {regex(R"(\bcontacts\b)"), "contacted"},
-      {regex(R"(\bcollides\b)"), "collided"},
-      {regex(R"(\bcomes\b)"), "came"},
-      {regex(R"(\b(he|she|driver|it|v[1-9]) (?:states|says)\b)"), "$1 stated"},
-  }};
-  s = ReplaceEach(s, kPresentTense);
+  // Police abbreviations ("nb on elm st", "a 4 ln rdwy") and the present
+  // tense police narratives are often in ("v1 is traveling north ... v2 has
+  // been stopped ... the front of v1 strikes": the rules read the
+  // investigators' past tense), whole words, in one pass.
+  static const std::map<string, string> kWords = {
+      {"nb", "northbound"}, {"sb", "southbound"}, {"eb", "eastbound"},  {"wb", "westbound"},
+      {"lns", "lanes"},     {"ln", "lane"},       {"rdwy", "roadway"},  {"intx", "intersection"},
+      {"intersec", "intersection"}, {"hwy", "highway"},
+      {"is", "was"},        {"are", "were"},      {"has", "had"},       {"have", "had"},
+      {"does", "did"},      {"strikes", "struck"}, {"impacts", "impacted"}, {"contacts", "contacted"},
+      {"collides", "collided"}, {"comes", "came"}};
+  static const regex kWordsPattern = [] {
+    string alt;
+    for (const auto& [from, to] : kWords) alt += (alt.empty() ? "" : "|") + from;
+    return regex(R"(\b()" + alt + R"()\b)");
+  }();
+  s = ReplaceWith(s, kWordsPattern, [](const smatch& m) { return kWords.at(m[1].str()); });
+  static const regex kSays(R"(\b(he|she|driver|it|v[1-9]) (?:states|says)\b)");
+  s = std::regex_replace(s, kSays, "$1 stated");
   // Number words: "forty-five" -> 45, "two" -> 2.
   static const regex kCompound(
       R"(\b(twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[- ](one|two|three|four|five|six|seven|eight|nine)\b)");
@@ -1412,6 +1402,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
                    static_cast<int>(sentences[sg.sentence].kind), impact, sg.perceived ? " seen" : "", sg.text.c_str());
     }
   }
+  // What the narrative itself tells of V1 before the impact (not what
+  // another driver saw of it, not a coded or injury sentence).
+  auto v1_before_impact = [&](const Segment& seg) {
+    return seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative;
+  };
+
   // ---- Directions, lanes, speeds, movements per vehicle.
   static const regex kLaneNo(
       R"(\b(?:in|within|using|from|occupying)\s+(?:the\s+)?(?:lane\s+([1-9])\b|([1-9])(?:st|nd|rd|th)\s+(?:\w+\s+){0,2}?lane))");
@@ -1676,10 +1672,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // street ... was controlled by a stop sign").
   if (v1_road.empty() && v1_named_road.empty()) {
     static const regex kAtTheSign(R"(\b(?:stopped|stop|waiting|sat|paused)\b[^.;]{0,25}?\bstop sign\b)");
-    const bool v1_at_sign = std::any_of(segments.begin(), segments.end(), [&](const Segment& seg) {
-      return seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact &&
-             sentences[seg.sentence].kind == Kind::kNarrative && Has(seg.text, kAtTheSign);
-    });
+    const bool v1_at_sign = std::any_of(segments.begin(), segments.end(),
+                                        [&](const Segment& seg) { return v1_before_impact(seg) && Has(seg.text, kAtTheSign); });
     static const regex kSignControls(
         R"(\b(?:controlled by|had|has|with|faced)\s+(?:a\s+)?stop signs?\b|\bstop[- ]sign[- ]controlled\b)");
     std::set<string> signed_roads;
@@ -1734,10 +1728,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // A direction the report calls a one-way road ("a northbound one-way
     // roadway"): a count of that direction's lanes is the road's total.
     auto one_way_bound = [&](const std::optional<Compass>& bound) {
-      if (!bound) return false;
-      const string dir(ToString(*bound));
-      const regex one_way_dir(R"(\b)" + dir + R"(bound\s+oneway\b|\boneway\s+(?:[\w-]+\s+)?)" + dir + R"(bound\b)");
-      return Has(scene, one_way_dir);
+      static const std::map<Compass, regex> kOneWayBound = [] {
+        std::map<Compass, regex> m;
+        for (Compass c : {Compass::kEast, Compass::kNorth, Compass::kWest, Compass::kSouth}) {
+          const string dir(ToString(c));
+          m.emplace(c, regex(R"(\b)" + dir + R"(bound\s+oneway\b|\boneway\s+(?:[\w-]+\s+)?)" + dir + R"(bound\b)"));
+        }
+        return m;
+      }();
+      return bound && Has(scene, kOneWayBound.at(*bound));
     };
     for (size_t i = 0; i < sentences.size(); ++i) {
       const Sentence& s = sentences[i];
@@ -1906,8 +1905,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     for (const Segment& seg : segments) {
       static const regex kOnto(R"(\bonto\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
       smatch om;
-      if (seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative &&
-          std::regex_search(seg.text, om, kOnto)) {
+      if (v1_before_impact(seg) && std::regex_search(seg.text, om, kOnto)) {
         v1_onto = om[1].str();
         break;
       }
@@ -2195,7 +2193,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kMiddleLane(R"(\bmiddle (?:travel |through )?lane\b)");
     bool v1_from_driveway = false, v1_middle_lane = false;
     for (const Segment& seg : segments) {
-      if (seg.vehicle != 1 || seg.perceived || seg.sentence > impact || sentences[seg.sentence].kind != Kind::kNarrative) continue;
+      if (!v1_before_impact(seg)) continue;
       if (LeavesDriveway(seg.text)) v1_from_driveway = true;
       if (Has(seg.text, kMiddleLane)) v1_middle_lane = true;
     }
@@ -2333,9 +2331,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       smatch m;
       // ... a bare number only when it could be a limit in mph ("limit: 00" is none).
-      if (!found && std::regex_search(s.text, m, kBare) && std::stod(m[1].str()) >= 5 && std::stod(m[1].str()) <= 110) {
+      if (!found && std::regex_search(s.text, m, kBare) && std::stoi(m[1].str()) >= 5) {
         const size_t at = static_cast<size_t>(m.position());
-        limits.push_back({std::stod(m[1].str()) * kMphToMps, "mph", owner_at(s, at),
+        limits.push_back({std::stoi(m[1].str()) * kMphToMps, "mph", owner_at(s, at),
                           inherited_axis(static_cast<size_t>(&s - sentences.data()), AxisIn(s.text.substr(0, at))),
                           order++, ClauseRoad(s.text, at), named_at(static_cast<size_t>(&s - sentences.data()), at)});
       }
@@ -2403,7 +2401,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // only the other road: "a residential street that meets ...").
     string v1_text;
     for (const Segment& seg : segments) {
-      if (seg.vehicle == 1 && !seg.perceived && seg.sentence <= impact && sentences[seg.sentence].kind == Kind::kNarrative) {
+      if (v1_before_impact(seg)) {
         v1_text = BeforeTheTurn(seg.text);
         break;
       }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cctype>
+#include <initializer_list>
 #include <map>
 #include <regex>
 #include <stdexcept>
@@ -69,30 +70,54 @@ string LaneWords(const string& s) {
   });
 }
 
-string ReplaceWords(string s, const std::vector<std::pair<const char*, const char*>>& words) {
-  for (const auto& [from, to] : words) {
-    s = std::regex_replace(s, regex(string(R"(\b)") + from + R"(\b)"), to);
-    string cap_from = from, cap_to = to;
-    cap_from[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(cap_from[0])));
-    cap_to[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(cap_to[0])));
-    s = std::regex_replace(s, regex(R"(\b)" + cap_from + R"(\b)"), cap_to);
+// Whole words swapped for others in one pass, each also when capitalised
+// ("was" -> "is", "Was" -> "Is").
+class WordSwap {
+ public:
+  explicit WordSwap(std::initializer_list<std::pair<string, string>> words) {
+    string alt;
+    for (const auto& [from, to] : words) {
+      for (const bool cap : {false, true}) {
+        string f = from, t = to;
+        if (cap) {
+          f[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(f[0])));
+          t[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(t[0])));
+        }
+        to_[f] = t;
+        alt += (alt.empty() ? "" : "|") + f;
+      }
+    }
+    pattern_ = regex(R"(\b()" + alt + R"()\b)");
   }
-  return s;
-}
+  string operator()(const string& s) const {
+    return ReplaceWith(s, pattern_, [this](const smatch& m) { return to_.at(m[1].str()); });
+  }
+
+ private:
+  std::map<string, string> to_;
+  regex pattern_;
+};
 
 string PresentTense(const string& s) {
-  return ReplaceWords(s, {{"was", "is"},
-                          {"were", "are"},
-                          {"had", "has"},
-                          {"struck", "strikes"},
-                          {"impacted", "impacts"},
-                          {"contacted", "contacts"},
-                          {"stated", "states"},
-                          {"came", "comes"}});
+  static const WordSwap kSwap{{{"was", "is"},
+                               {"were", "are"},
+                               {"had", "has"},
+                               {"struck", "strikes"},
+                               {"impacted", "impacts"},
+                               {"contacted", "contacts"},
+                               {"stated", "states"},
+                               {"came", "comes"}}};
+  return kSwap(s);
 }
 
 string British(const string& s) {
-  return ReplaceWords(s, {{"traveling", "travelling"}, {"traveled", "travelled"}, {"center", "centre"}});
+  static const WordSwap kSwap{{{"traveling", "travelling"}, {"traveled", "travelled"}, {"center", "centre"}}};
+  return kSwap(s);
+}
+
+string Road(const string& s) {
+  static const WordSwap kSwap{{{"roadway", "road"}}};
+  return kSwap(s);
 }
 
 string CompassAbbreviations(const string& s) {
@@ -158,7 +183,7 @@ const std::vector<Entry>& Entries() {
       {{"kmh-only", "30 mph (48 km/h), 30 mph -> 48 km/h"}, KmhOnly},
       {{"lane-digits", "two-lane, four lanes -> 2-lane, 4 lanes"}, LaneDigits},
       {{"lane-words", "2-lane, 4 lanes -> two-lane, four lanes"}, LaneWords},
-      {{"road", "roadway -> road"}, [](const string& s) { return ReplaceWords(s, {{"roadway", "road"}}); }},
+      {{"road", "roadway -> road"}, Road},
       {{"present-tense", "was traveling, struck -> is traveling, strikes"}, PresentTense},
       {{"british", "traveling, center -> travelling, centre"}, British},
       {{"compass-abbreviations", "northbound -> NB"}, CompassAbbreviations},
