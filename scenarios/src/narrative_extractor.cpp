@@ -510,6 +510,17 @@ struct RoadStatement {
   string counted;                  // the road its own noun phrase names ("a 2-lane collector road")
 };
 
+// "the road", "the roadway", "the street" name no road in particular.
+bool GenericRoad(const string& road) { return road == "road" || road == "roadway" || road == "street"; }
+
+// A statement naming another road than the one `best` counts by its own noun
+// ("a six-lane parkway and a two-lane county road. the parkway had 3 lanes
+// each way", `best` the county road's count).
+bool OfAnotherRoad(const RoadStatement& rs, const RoadStatement& best) {
+  return best.road.empty() && !best.counted.empty() && !GenericRoad(best.counted) && !rs.road.empty() &&
+         !GenericRoad(rs.road) && rs.road != best.counted;
+}
+
 std::optional<int> AxisIn(const string& s) {
   static const regex kAxis(
       R"(\b(east|west)[- ]?(?:/|-|and)?\s*(?:west|east)\b|\b(north|south)[- ]?(?:/|-|and)?\s*(?:south|north)\b|\b(north|south|east|west)[- ]?bound\b|\b(n|s)/(?:s|n)\b|\b(e|w)/(?:w|e)\b)");
@@ -788,7 +799,7 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
 // "side street", "county road", "highway", "stem".
 const string& RoadNoun() {
   static const string kNoun =
-      R"(((?:(?:county|state|rural|city|residential|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|route|arterial|collector|stem|freeway|interstate|expressway)))";
+      R"(((?:(?:county|state|rural|city|residential|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|parkway|turnpike|route|arterial|collector|stem|freeway|interstate|expressway)))";
   return kNoun;
 }
 
@@ -962,7 +973,8 @@ string SubjectRoad(const string& s, size_t pos) {
 // The road a vehicle's text puts it on ("was westbound on the side street").
 string RoadTravelledOn(const string& full) {
   const string t = BeforeTheTurn(full);
-  static const regex kOn(R"(\b(?:on|along|down|up|from|onto)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
+  // "in the right lane (lane one) of the highway".
+  static const regex kOn(R"(\b(?:on|along|down|up|from|onto|lanes?(?:\s*\([^)]*\))? of)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   return std::regex_search(t, m, kOn) ? m[1].str() : string();
 }
@@ -1686,7 +1698,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     if (signed_roads.size() == 1) v1_road = *signed_roads.begin();
   }
-  const bool distinctive = !v1_road.empty() && v1_road != "road" && v1_road != "roadway" && v1_road != "street";
+  const bool distinctive = !v1_road.empty() && !GenericRoad(v1_road);
   // Which vehicle's segment a position in a sentence belongs to.
   auto owner_at = [&](const Sentence& s, size_t pos) {
     int owner = 0;
@@ -1971,6 +1983,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!best && v1_way <= 0 && distinctive) {
       best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.road == v1_road; });
     }
+    // "... between a four-lane divided highway and a two lane county road.
+    // v1 was westbound on the county road": the count its own noun phrase
+    // names.
+    if (!best && v1_way <= 0 && distinctive) {
+      best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.road.empty() && rs.counted == v1_road; });
+    }
     if (!best && v1_way <= 0 && v1_axis >= 0) {
       best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == v1_axis; });
     }
@@ -2031,6 +2049,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (rs.sentence > best->sentence + 1 || rs.sentence + 1 < best->sentence) continue;
         if (!best->axis && rs.axis && v1_axis >= 0 && *rs.axis != v1_axis) continue;  // a road across V1's course
         if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
+        if (OfAnotherRoad(rs, *best)) continue;
         if (!total && rs.total) total = rs.total;
         if (!per && rs.per_direction) per = rs.per_direction;
         if (rs.directional && (!directional || (!v1s_direction && of_v1s_direction(rs)))) {
@@ -2114,8 +2133,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (const auto& rs : roads) {
         if (rs.sentence != k) continue;
         counted = true;
-        // The same road: on the same axis, or near it with no axis to tell.
-        const bool same = (rs.axis && best->axis) ? *rs.axis == *best->axis : rs.sentence <= best->sentence + 1;
+        // The same road: on the same axis, or near it with no axis to tell,
+        // and not another road by name.
+        const bool same = (rs.axis && best->axis) ? *rs.axis == *best->axis
+                                                  : rs.sentence <= best->sentence + 1 && !OfAnotherRoad(rs, *best);
         if (same) return false;
       }
       return counted;

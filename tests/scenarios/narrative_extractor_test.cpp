@@ -2036,5 +2036,30 @@ TEST(NarrativeExtractorTest, ABayInAdditionToTheThroughLanes) {
   EXPECT_EQ(r.road.lanes_per_direction.value, 3);
 }
 
+TEST(NarrativeExtractorTest, TheRoadNamedByItsCountsOwnNoun) {
+  // Both counts are in one sentence about the junction; V1 is placed on
+  // "the county road", which only the second count's noun names.
+  const auto r = kExtractor.Extract(
+      "The crash happened at a junction of a six-lane divided parkway and a two-lane gravel county road that came in "
+      "from the west. The parkway had three lanes each way split by a grass median. V1, a 2004 Buick Century, was "
+      "eastbound on the county road and stopped at its stop sign before turning left. V2, a 2001 Dodge Neon, was "
+      "northbound on the parkway. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 1);
+  EXPECT_FALSE(r.road.divided.value);
+}
+
+TEST(NarrativeExtractorTest, TheLaneOfTheRoadIsTheRoadTravelledOn) {
+  // "in the right lane (lane one) of the highway": V1 is on the highway,
+  // not the county road the other vehicle came from.
+  const auto r = kExtractor.Extract(
+      "The crash happened at a signalized intersection of a divided highway and a two-lane county road. The highway "
+      "had two lanes in each direction separated by a raised median. V1, a 2003 Chrysler PT Cruiser, was westbound "
+      "in the right lane (lane one) of the highway. V2, a 1991 Chevrolet pickup, was northbound on the county road "
+      "and entered the intersection against the red signal. The front of V2 struck the left side of V1.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
