@@ -573,9 +573,11 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kRight(R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?right\b|\bright[- ]hand turn|\bright turn\b|\b(?:made|make|making)\s+a\s+right\s+(?:onto|into)\b)");
   // An intention is not the movement: "waiting to turn left", "intending to turn".
   static const regex kIntention(
-      R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn))");
+      R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn)|)"
+      // "to get into position for a right turn into a plaza".
+      R"(\bfor (?:a|an|the|his|her|its) (?:[\w-]+ )?(?:left|right) turn\b)");
   static const regex kLaneChange(
-      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|make|enter|exit|pass|go around)\b|\b(?:moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|make|enter|exit|pass|go around)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
@@ -727,9 +729,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // One that lost it in the ramp's curve before the merge was negotiating
   // the curve (NASS codes that, not the merge it never made).
   if (e.merge) return MovementDecision{Movement::kMerging, e.in_curve ? Movement::kStraight : Movement::kMerging, Provenance::kStated};
-  // A pass is preceded by going straight, coded or not: none of the 150
-  // development vehicles is coded passing, the overtaker of crossing/21 is
-  // coded going straight.
+  // A pass is preceded by going straight, coded or not: the three passes in
+  // the development set (straight/0, crossing/21, and straight/5 on a
+  // curve) are coded by what came before, none as passing.
   if (e.pass) return MovementDecision{Movement::kPassing, Movement::kStraight, Provenance::kStated};
   if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
   if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
@@ -1266,6 +1268,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   };
   static const regex kSubjectBefore(
       R"((?:^|[,:(.]|\b(?:and|while|when|as|after|before|then|but|whereupon|since|because|until|that|where|so|once|at which time|stated|said|reported|indicated|advised|claimed|explained|admitted|recalled|signal|light|arrow|sign|time|point|moment|curve|crest))\s*(?:the\s+(?:[\w-]+\s+){0,3}?(?:driver|operator|front|rear|back|left|right|side)(?:\s+(?:front|rear|side|left|right))*\s+of\s+)?$)");
+  // "just east of the intersection the driver of v1 began to change lanes":
+  // a driver followed by a verb is the clause's subject wherever it stands.
+  static const regex kDriverOf(R"(\bthe (?:driver|operator) of\s*$)");
+  static const regex kVerbAfter(
+      R"(^\s+(?:\w+ly\s+)?(?:was|were|had|began|started|then|attempted|tried|intended|turned|pulled|moved|changed|steered|braked|failed|looked|proceeded|continued|drove|decided|did not|could not)\b)");
   // "behind v2, a jetta, which was stopped", and appositives "v2, a parked
   // and unoccupied ciera": both describe that vehicle.
   static const regex kRelativeAfter(
@@ -1293,7 +1300,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     for (const Ref& ref : s.refs) {
       const string before = Before(s.text, ref.pos, 40);
       const string after = s.text.substr(ref.pos + 2, 80);
-      if (Has(before, kSubjectBefore) || Has(after, kRelativeAfter)) {
+      if (Has(before, kSubjectBefore) || Has(after, kRelativeAfter) || (Has(before, kDriverOf) && Has(after, kVerbAfter))) {
         starts.push_back({ref.pos, ref.vehicle, false});
       } else if (Has(before, kPerceivedBefore) && Has(after, kPerceivedState)) {
         starts.push_back({ref.pos, ref.vehicle, true});

@@ -2061,5 +2061,30 @@ TEST(NarrativeExtractorTest, TheLaneOfTheRoadIsTheRoadTravelledOn) {
   EXPECT_EQ(r.road.lanes_per_direction.value, 2);
 }
 
+TEST(NarrativeExtractorTest, AMidSentenceDriverIsTheSubjectAndALaneChangeForATurnIsALaneChange) {
+  // "just past the light the driver of V1 began to change lanes ... for a
+  // right turn into a plaza": V1's lane change, not V2's, and not a turn.
+  const auto r = kExtractor.Extract(
+      "The sideswipe happened on a four-lane undivided street with two lanes each way. V1, a 2001 Mazda MPV, was "
+      "southbound in the left lane. V2, a 2005 Kia Rio, was southbound in the right lane. Just past the light the "
+      "driver of V1 began to change lanes to the right to get into position for a right turn into a plaza. The right "
+      "front of V1 contacted the left side of V2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
+}
+
+TEST(NarrativeExtractorTest, BeganToMoveIntoTheLaneIsALaneChange) {
+  // An expectation ("expected it to move over to the left lane") is not one.
+  const auto r = kExtractor.Extract(
+      "V1, a 2004 Toyota Camry, was northbound in the left lane of a four-lane divided highway. V2, a 1995 Ford F-150, "
+      "was northbound in the right lane. The driver of V1 began to move back into the right lane and the right rear "
+      "of V1 contacted the left front of V2. The driver of V2 stated she expected V1 to move over to the left lane.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
