@@ -1717,11 +1717,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   {
     // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
-        R"(\b(\d)[- ](?:through\s+|travel\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
+        R"(\b(\d)[- ](?:through\s+|travel\s+|moving\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     // "each direction of route 30 has 2 through lanes plus a left-turn bay",
     // "a grass median and, in each direction, 2 through lanes and a left-turn lane".
     static const regex kEachHas(
-        R"((?:\beach direction\b[^.;]{0,30}?\b(?:has|had)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
+        R"((?:\beach (?:direction|approach|side)\b[^.;]{0,30}?\b(?:has|had)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+|moving\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|travel\s+|through\s+)?lanes?\b|(?=\s*(?:[,;.)]|and\b|$)))|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(
@@ -1781,7 +1781,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         }
         // One-way belongs to this road only when no other road phrase
         // (", and a ...") sits between the count and the word.
-        const string near_before = Before(s.text, pos, 25);
+        // "a oneway westbound roadway with 3 travel lanes": back to the
+        // start of this road's phrase.
+        string near_before = Before(s.text, pos, 40);
+        const size_t other_road = near_before.rfind(" and ");
+        if (other_road != string::npos) near_before = near_before.substr(other_road);
         string near_after = s.text.substr(pos + static_cast<size_t>(m.length(0)), 15);
         // ... but "a 1-lane, oneway roadway" lists adjectives of one road.
         const size_t comma = near_after.rfind(", oneway", 0) == 0 || near_after.rfind(",oneway", 0) == 0
@@ -1915,6 +1919,25 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) {
       return a.sentence != b.sentence ? a.sentence < b.sentence : a.pos < b.pos;
     });
+    // "a 2-lane roadway that widened to 3 lanes on each approach to the
+    // intersection": the junction's count replaces the one before it.
+    {
+      static const regex kWidenedTo(R"(\b(?:widen\w*|flare\w*|expand\w*|increas\w*)\s+(?:out\s+)?to\s+$)");
+      std::vector<bool> superseded(roads.size(), false);
+      for (size_t k = 0; k < roads.size(); ++k) {
+        const RoadStatement& w = roads[k];
+        if (!w.total || !Has(Before(sentences[w.sentence].text, w.pos, 20), kWidenedTo)) continue;
+        for (size_t j = 0; j < k; ++j) {
+          const RoadStatement& o = roads[j];
+          if (o.sentence == w.sentence && o.owner == w.owner && o.total && !o.per_direction && !o.directional) superseded[j] = true;
+        }
+      }
+      size_t kept = 0;
+      for (size_t k = 0; k < roads.size(); ++k) {
+        if (!superseded[k]) roads[kept++] = roads[k];
+      }
+      roads.resize(kept);
+    }
     // V1's road: stated in V1's own segment, else the road on V1's axis, else
     // the first road not tied to another vehicle (the crash road is
     // described first).
@@ -2068,11 +2091,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kOtherRoadPhrase(R"(\b2[- ]way\b|\band (?:a|an)\b)");
       // "... occurred on a one-way northbound street. the street had 3
       // northbound travel lanes": the same road, told in two sentences.
-      for (size_t k = best->sentence > 0 ? best->sentence - 1 : 0; k <= best->sentence && v1_way == 0 && !one_way; ++k) {
+      // A count of each direction's lanes is a two-way road's ("an undivided
+      // avenue, 2 lanes each way, where a one-way street leaves it").
+      const bool each_way = best->per_direction > 0;
+      for (size_t k = best->sentence > 0 ? best->sentence - 1 : 0; k <= best->sentence && v1_way == 0 && !one_way && !each_way; ++k) {
         const string& t = sentences[k].text;
         if (Has(t, kOneWaySentence) && !Has(t, kOtherRoadPhrase) && !Has(scene, kTwoWay)) one_way = true;
       }
-      if (!one_way && v1_way == 0 && Has(sentences[best->sentence].text, kOneWaySentence) &&
+      if (!one_way && v1_way == 0 && !each_way && Has(sentences[best->sentence].text, kOneWaySentence) &&
           !Has(sentences[best->sentence].text, kOtherRoadPhrase)) {
         one_way = true;
       }

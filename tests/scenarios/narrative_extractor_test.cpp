@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <random>
+#include <string>
 #include <thread>
+#include <tuple>
 
 namespace accsim {
 namespace {
@@ -2084,6 +2086,35 @@ TEST(NarrativeExtractorTest, BeganToMoveIntoTheLaneIsALaneChange) {
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kChangingLanes);
   EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, LaneCountsAtTheApproach) {
+  auto lanes = [](const char* road) {
+    const auto r = kExtractor.Extract(std::string(road) +
+                                      " V1, a 2002 Ford Focus, was westbound. V2, a 2004 Jeep Liberty, was northbound. "
+                                      "The front of V1 struck the right side of V2.");
+    return std::tuple(r.road.lanes_total.value, r.road.lanes_per_direction.value, r.road.one_way.value);
+  };
+  // The count where the road widens at the junction replaces the road's.
+  EXPECT_EQ(std::get<0>(lanes("The crash happened at a signalized intersection. The east/west road was a two-lane "
+                              "undivided road that widened to three lanes at the intersection: one eastbound lane, one "
+                              "westbound lane and a center left turn lane.")),
+            3);
+  // "each approach ... had 2 through lanes and a left-turn bay".
+  EXPECT_EQ(std::get<1>(lanes("The crash happened at an intersection of a four-lane divided boulevard and a two-lane "
+                              "side street. On the east/west boulevard each approach to the intersection had two "
+                              "through lanes and a left-turn bay.")),
+            3);
+  // "two moving lanes each way" on an avenue a one-way street leaves.
+  const auto avenue = lanes("The crash happened on an undivided avenue, two moving lanes each way, where a one-way "
+                            "northbound street leaves it to the left.");
+  EXPECT_EQ(std::get<0>(avenue), 4);
+  EXPECT_FALSE(std::get<2>(avenue));
+  // "a one-way westbound roadway with three travel lanes and a two-way ...".
+  const auto one_way = lanes("The crash happened at the intersection of a one-way westbound roadway with three travel "
+                             "lanes and a two-way north/south roadway.");
+  EXPECT_EQ(std::get<0>(one_way), 3);
+  EXPECT_TRUE(std::get<2>(one_way));
 }
 
 }  // namespace
