@@ -784,7 +784,9 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
       R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)");
   static const regex kResidential(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)");
   static const regex kRural(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)");
-  static const regex kUrban(R"(\b(?:urban|suburban|city|downtown|business district|commercial)\b)");
+  // Street parking and sidewalks are a town's: "parking lanes on both sides".
+  static const regex kUrban(
+      R"(\b(?:urban|suburban|city|downtown|business district|commercial)\b|\bparking lanes?\b|\b(?:curbside|on-street|parallel|metered) parking\b|\bsidewalks?\b|\bstorefronts?\b)");
   static const regex kOneWayStreet(R"(\boneway (?:\w+ )?(?:road|roadway|street)\b)");
   static const regex kHighway(R"(\bhighway\b)");
   if (Has(scene, kFreeway)) return 70.0;
@@ -808,9 +810,19 @@ const string& RoadNoun() {
 // The road the clause holding `pos` is about: its first named road ("the
 // side street is a 2-lane road posted at 30 mph" -> "side street").
 // `end`, when given, is where that road's words end.
+// A clause also starts at a second road with its own verb ("the highway had
+// a 45 mph limit and the side road had a 25 mph limit").
 string ClauseRoad(const string& s, size_t pos, size_t* end = nullptr) {
   const size_t stop = s.find_last_of(".;:", pos == 0 ? 0 : pos - 1);
-  const size_t from = stop == string::npos ? 0 : stop + 1;
+  size_t from = stop == string::npos ? 0 : stop + 1;
+  static const regex kNextRoadClause(R"(\b(?:and|while|whereas|but)\s+(?=(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" +
+                                     RoadNoun() + R"(\s+(?:had|has|was|is|were|are|carried|carries)\b))");
+  const string head = s.substr(from, pos - from);
+  size_t next = 0;
+  for (auto it = std::sregex_iterator(head.begin(), head.end(), kNextRoadClause); it != std::sregex_iterator(); ++it) {
+    next = static_cast<size_t>(it->position() + it->length());
+  }
+  from += next;
   static const regex kFirst(R"(\b(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   const string clause = s.substr(from, pos - from);
@@ -2378,9 +2390,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           if (const auto a = AxisIn(named)) axis = a;
           if (std::regex_search(named, vm, kVehiclesRoad)) owner = std::stoi(vm[1].str());
         }
+        // ... and by its kind: "72 kmh on the through road and 48 kmh on the
+        // side road".
+        static const regex kOnRoadNounAfter(
+            R"(^\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:on|for|along)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
+            R"(\b)");
+        smatch rn;
+        const string road = std::regex_search(tail, rn, kOnRoadNounAfter) ? rn[1].str() : ClauseRoad(s.text, pos);
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
-                          inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++,
-                          ClauseRoad(s.text, pos), named_at(static_cast<size_t>(&s - sentences.data()), pos)});
+                          inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++, road,
+                          named_at(static_cast<size_t>(&s - sentences.data()), pos)});
         found = true;
       }
       smatch m;
@@ -2426,7 +2445,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       return nullptr;
     };
     if (std::getenv("ACCSIM_DEBUG_ROADS")) {
-      std::fprintf(stderr, "[v1 named road: %s]\n", v1_named_road.c_str());
+      std::fprintf(stderr, "[v1 named road: %s] [v1 road: %s]\n", v1_named_road.c_str(), v1_road.c_str());
       for (const auto& l : limits) {
         std::fprintf(stderr, "[limit %.1f kmh owner%d axis%d road '%s' name '%s']\n", l.mps * 3.6, l.owner,
                      l.axis ? *l.axis : -1, l.road.c_str(), l.name.c_str());

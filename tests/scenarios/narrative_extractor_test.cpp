@@ -2117,5 +2117,30 @@ TEST(NarrativeExtractorTest, LaneCountsAtTheApproach) {
   EXPECT_TRUE(std::get<2>(one_way));
 }
 
+TEST(NarrativeExtractorTest, EachLimitBelongsToTheRoadItsClauseNames) {
+  auto limit_mph = [](const std::string& scene) {
+    const auto r = kExtractor.Extract(scene);
+    return r.road.speed_limit_mps.value / 0.44704;
+  };
+  // The road named after the value.
+  EXPECT_NEAR(limit_mph("V1, a 2000 GMC Yukon, was westbound on a two-lane, two-way asphalt roadway, approaching a "
+                        "T-intersection with a road from the north. The posted speed limit was 72 kmph (45 mph) on the "
+                        "through road and 48 kmph (30 mph) on the side road. V2, a 1996 Ford Escort, was southbound on "
+                        "the side road and turned left. The front of V1 struck the left side of V2."),
+              44.7, 0.5);
+  // A second road with its own verb starts its own clause.
+  EXPECT_NEAR(limit_mph("The crash happened where a two-lane side road ends at a four-lane highway. The highway had a "
+                        "posted speed limit of 50 mph and the side road had a posted speed limit of 25 mph. V1, a 1993 "
+                        "Chevrolet Astro, was southbound on the side road and stopped at the stop sign before turning "
+                        "right. V2, a 2004 Honda Odyssey, was westbound on the highway. The front of V2 struck the left "
+                        "side of V1."),
+              25.0, 0.5);
+  // No limit stated; street parking on both sides is a town's street.
+  EXPECT_NEAR(limit_mph("The crash occurred on a two-way roadway with one lane in each direction and parking lanes on "
+                        "both sides. V1, a 2003 Honda CR-V, was northbound. V2, a 2000 box truck, was southbound and "
+                        "crossed the center line. The left side of V2 struck the left side of V1."),
+              30.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
