@@ -586,7 +586,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
-      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|began|started|made|moved)\b)");
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|began|started|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -711,9 +711,8 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     else if (n.u_turn || st.u_turn) d.pre_event = Movement::kTurnLeft;
     else if (rolled) d.pre_event = Movement::kSlowing;
     else if (n.slowing || st.slowing) d.pre_event = Movement::kSlowing;
-    // When the turn is itself the critical event ("this vehicle turning left
-    // at intersection"), what the vehicle did before it was driving on.
-    else if (n.coded_turn_left || n.coded_turn_right) d.pre_event = Movement::kStraight;
+    // Otherwise the turn is its own pre-event movement; the record-level
+    // pass codes a turn off a curve or from the wrong lane as going straight.
     return d;
   }
   // A stop before the critical event is the pre-crash movement even when a
@@ -2825,6 +2824,31 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const size_t bi = static_cast<size_t>(b - r.vehicles.data());
     if (!narrative[bi + 1].intent_left && !narrative[bi + 1].intent_right) {
       r.vehicles[bi].pre_event.Set(Movement::kStraight, Provenance::kInferred);
+    }
+  }
+  // A turn with nothing told before it (no stop, no slowing) is its own
+  // pre-event movement (t/8, straight/12), except where NASS codes what the
+  // road made the vehicle do first: a turn off a curve ("a 5% downhill grade
+  // and a curve-left", t/7: negotiating the curve), and a turn across a lane
+  // of its own direction, from the wrong lane (crossing/17, 19, 21: going
+  // straight).
+  {
+    static const regex kRoadCurves(R"(\bcurv(?:e|es|ed|ing)\b)");
+    bool road_curves = false;
+    for (const Sentence& s : sentences) {
+      if (s.kind == Kind::kNarrative && s.refs.empty() && Has(s.text, kRoadCurves)) road_curves = true;
+    }
+    for (size_t i = 0; i < r.vehicles.size(); ++i) {
+      VehicleRecord& v = r.vehicles[i];
+      const MovementEvidence& told = narrative[i + 1];
+      if (!Turning(v.pre_event.value) || v.pre_event.value != v.movement.value ||
+          !(told.coded_turn_left || told.coded_turn_right)) {
+        continue;
+      }
+      const bool wrong_lane = std::any_of(r.vehicles.begin(), r.vehicles.end(), [&](const VehicleRecord& o) {
+        return &o != &v && o.travel.value && o.travel.value == v.travel.value && !o.parked.value;
+      });
+      if (road_curves || wrong_lane) v.pre_event.Set(Movement::kStraight, Provenance::kInferred);
     }
   }
 

@@ -523,17 +523,20 @@ TEST(NarrativeExtractorTest, AStreetAbbreviationDoesNotJoinTwoVehiclesSentences)
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
-TEST(NarrativeExtractorTest, ATurnThatIsTheCriticalEventWasPrecededByDrivingOn) {
+TEST(NarrativeExtractorTest, ATurnFromTheWrongLaneWasPrecededByDrivingOn) {
+  // A right turn across the lane of a vehicle going the same way (the
+  // real crossing/17, 19 and 21): going straight before the critical turn.
   const auto r = kExtractor.Extract(
+      "V1 was traveling east in the left lane and turned right at the intersection. V2 was traveling east in the "
+      "right lane. The front of V2 struck the right side of V1. The critical precrash event for V1 was this vehicle "
+      "traveling, turning right at intersection.");
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnRight);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  const auto oncoming = kExtractor.Extract(
       "V1 was traveling east and turned left at the intersection. V2 was traveling west. The front of V2 struck "
       "the right side of V1. The critical precrash event for V1 was this vehicle traveling, turning left at "
       "intersection.");
-  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
-  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
-  const auto uncoded = kExtractor.Extract(
-      "V1 was traveling east and turned left at the intersection. V2 was traveling west. The front of V2 struck "
-      "the right side of V1.");
-  EXPECT_EQ(uncoded.vehicles[0].pre_event.value, Movement::kTurnLeft);
+  EXPECT_EQ(oncoming.vehicles[0].pre_event.value, Movement::kTurnLeft);
 }
 
 TEST(NarrativeExtractorTest, AStopOnSeeingTheOtherIsTheAvoidanceNotThePreEvent) {
@@ -2140,6 +2143,37 @@ TEST(NarrativeExtractorTest, EachLimitBelongsToTheRoadItsClauseNames) {
                         "both sides. V1, a 2003 Honda CR-V, was northbound. V2, a 2000 box truck, was southbound and "
                         "crossed the center line. The left side of V2 struck the left side of V1."),
               30.0, 0.5);
+}
+
+TEST(NarrativeExtractorTest, ACodedTurnWithNothingBeforeItIsItsOwnPreEventMovement) {
+  auto pre_event = [](const std::string& road, const std::string& v2) {
+    const auto r = kExtractor.Extract(
+        road + " V1, a 1991 Volkswagen Jetta, was traveling southbound approaching the T-intersection intending on "
+               "turning left. " + v2 + " V1 made the left turn and the front of V2 struck the front-right of V1. The "
+               "critical precrash event for V1 was this vehicle turning left at the intersection.");
+    return r.vehicles.at(0).pre_event.value;
+  };
+  const std::string v2_oncoming = "V2, a 1994 Ford Taurus, was traveling northbound intending on going straight.";
+  EXPECT_EQ(pre_event("The crash occurred on a two-lane roadway with a T-intersection.", v2_oncoming),
+            Movement::kTurnLeft);
+  // On a curve: negotiating it (coded going straight).
+  EXPECT_EQ(pre_event("The crash occurred on a two-lane roadway with a T-intersection on a curve to the left.",
+                      v2_oncoming),
+            Movement::kStraight);
+  // Across a lane of its own direction (from the wrong lane): going straight.
+  EXPECT_EQ(pre_event("The crash occurred on a four-lane roadway with a T-intersection.",
+                      "V2, a 1994 Ford Taurus, was traveling southbound in the lane to the left of V1."),
+            Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, SlowedToTurnIsSlowing) {
+  const auto r = kExtractor.Extract(
+      "The crash occurred on a two lane undivided roadway at a T-intersection. V1, a 2004 Suzuki motorcycle, was "
+      "traveling north. V2, a 1998 Jeep Cherokee, was traveling south and slowed to turn left onto the residential "
+      "street. V2 turned across the northbound lane and was struck in the right side by the front of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kSlowing);
 }
 
 }  // namespace
