@@ -546,9 +546,11 @@ struct MovementEvidence {
   bool coded_lane_change = false, other_says_stopped = false;
   bool rolled_stop = false, no_stop = false;
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
+  bool stopped_again = false;  // "moved forward ... then stopped again"
   bool u_turn = false;
   bool in_curve = false;  // "entered the right curve at too great a speed"
   bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
+  bool turn_meant = false;  // a turn meant, its direction untold ("slowing to turn into the driveway")
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
            back || pass || slowing;
@@ -562,7 +564,8 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kStopThenGo(
       R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
-  static const regex kRolledStop(R"(\brolled (?:through|past)\b|\brolling stop\b)");
+  static const regex kRolledStop(
+      R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed (?:down )?but (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
   static const regex kNoStop(
       R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
@@ -586,7 +589,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
-      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|began|started|made|moved)\b)");
+      R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|began|started|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -602,8 +605,15 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   // A stop made on seeing the other vehicle is the avoidance, after the
   // critical event: "when he saw the other car coming, he stopped".
   static const regex kAvoidanceStop(R"(\b(?:saw|seeing|noticed|observed|spotted)\b[^.]{0,80}?\b(?:stopped|braked to a stop)\b)");
-  if (Has(t, kStopState) && !parked && !Has(t, kNoStop) && !Has(t, kAvoidanceStop)) {
-    if (Has(t, kStopThenGo)) {
+  // "was almost stopped when he was hit" is no stop.
+  static const regex kAlmostStopped(
+      R"(\b(?:almost|nearly|virtually|practically)\s+(?:stopped|at a stop|to a stop|come to a stop|came to a stop)\b)");
+  const string stops = std::regex_replace(t, kAlmostStopped, " ");
+  // "moved forward ... and then stopped again": the last word is the stop.
+  static const regex kStoppedAgain(R"(\b(?:stopped|came to a stop|halted)\s+again\b)");
+  if (Has(stops, kStoppedAgain)) e.stopped_again = true;
+  if (Has(stops, kStopState) && !parked && !Has(t, kNoStop) && !Has(t, kAvoidanceStop)) {
+    if (Has(t, kStopThenGo) && !e.stopped_again) {
       e.stop_cancelled = true;
     } else {
       e.stopped = true;
@@ -617,6 +627,9 @@ void ReadMovement(const string& t, MovementEvidence& e) {
       R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b|\b(?:left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b)");
   const string turns = std::regex_replace(t, kTurnLane, " lane ");
   const bool intention = Has(turns, kIntention);
+  // "slowing with its right turn signal on to turn into the driveway".
+  static const regex kTurnMeant(R"(\bto (?:make a |begin a )?turn\b|\bturn signal\b)");
+  if (Has(t, kTurnMeant)) e.turn_meant = true;
   if (!intention) {
     if (Has(turns, kLeft)) e.turn_left = true;
     if (Has(turns, kRight)) e.turn_right = true;
@@ -638,7 +651,7 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   if (Has(t, kSlow)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
   static const regex kStarted(
-      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b)");
+      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
   if (Has(t, kStarted)) e.started = true;
   static const regex kUTurn(R"(\bu-?\s?turn)");
   if (!intention && Has(t, kUTurn)) e.u_turn = true;
@@ -717,7 +730,7 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   }
   // A stop before the critical event is the pre-crash movement even when a
   // turn was intended afterwards (how NASS codes it).
-  if (e.stopped && !e.started) return both(Movement::kStopped, Provenance::kStated);
+  if (e.stopped && (!e.started || e.stopped_again)) return both(Movement::kStopped, Provenance::kStated);
   // A lane change that is itself the vehicle's coded critical event ("this
   // vehicle traveling over the lane line") was preceded by driving on:
   // NASS codes that as the pre-event movement, as for turns.
@@ -2822,7 +2835,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // turn is decelerating.
   if (type == CrashType::kRearEnd && b && b->pre_event.value == Movement::kSlowing && !Turning(b->movement.value)) {
     const size_t bi = static_cast<size_t>(b - r.vehicles.data());
-    if (!narrative[bi + 1].intent_left && !narrative[bi + 1].intent_right) {
+    if (!narrative[bi + 1].intent_left && !narrative[bi + 1].intent_right && !narrative[bi + 1].turn_meant) {
       r.vehicles[bi].pre_event.Set(Movement::kStraight, Provenance::kInferred);
     }
   }

@@ -2176,5 +2176,33 @@ TEST(NarrativeExtractorTest, SlowedToTurnIsSlowing) {
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kSlowing);
 }
 
+TEST(NarrativeExtractorTest, WhatCameLastBeforeTheCrashStoppedOrSlowing) {
+  // Moved up, then stopped again: stopped; the follower that had stopped
+  // and then accelerated into it: started (going straight).
+  const auto queue = kExtractor.Extract(
+      "The side street was controlled by a stop sign. V2, a 1996 Ford Taurus, was stopped at the stop sign. V1, a "
+      "2004 Nissan Sentra, had stopped behind V2. V2 moved forward to the edge of the route and then stopped again "
+      "for an approaching car. The driver of V1, who was looking to the left, accelerated, and the front of V1 struck "
+      "the back of V2.");
+  ASSERT_EQ(queue.vehicles.size(), 2u);
+  EXPECT_EQ(queue.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(queue.vehicles[1].pre_event.value, Movement::kStopped);
+  // "was northbound and slowing ... to turn into the driveway", "almost
+  // stopped": a lead that meant to turn, slowing, not stopped.
+  const auto lead = kExtractor.Extract(
+      "V2, a 2004 Saturn Ion, was northbound and slowing with its right turn signal on to turn into the driveway of "
+      "a store. V1, a 1999 GMC Sierra, was northbound behind V2. The front of V1 struck the back of V2. V2 was almost "
+      "stopped when it was hit.");
+  ASSERT_EQ(lead.vehicles.size(), 2u);
+  EXPECT_EQ(lead.vehicles[1].pre_event.value, Movement::kSlowing);
+  // "slowed but did not stop for its stop sign": slowing.
+  const auto rolled = kExtractor.Extract(
+      "V1, a 1996 Chevrolet Cavalier, was northbound and stopped at the stop sign and then started across the "
+      "intersection. V2, a 2003 GMC Sierra, was eastbound and slowed but did not stop for its stop sign. The front of "
+      "V2 struck the left side of V1.");
+  ASSERT_EQ(rolled.vehicles.size(), 2u);
+  EXPECT_EQ(rolled.vehicles[1].pre_event.value, Movement::kSlowing);
+}
+
 }  // namespace
 }  // namespace accsim
