@@ -2602,7 +2602,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // The clause of the contact first: "the rear of v1 slid out and it
     // rotated into the eastbound lane, where the front of v2 struck the right
     // side of v1" names v1's struck side after "where".
-    static const regex kClauseStart(R"(\b(?:where|whereupon)\b|;)");
+    // So does "..., and the front of v2 struck the right side of v1".
+    static const regex kClauseStart(R"(\b(?:where|whereupon)\b|;|,\s*and\b)");
     size_t clause = 0;
     {
       const string upto = s.substr(0, std::min(verb_pos, s.size()));

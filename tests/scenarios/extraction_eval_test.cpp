@@ -110,6 +110,12 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_n", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.97},
         {"collision_location", 0.95}, {"driving_actions", 0.83}, {"crash_type", 0.97}}},
+      {"nmvccs_style_w", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
+        {"collision_location", 0.97}, {"driving_actions", 0.91}, {"crash_type", 0.95}}},
+      {"nmvccs_style_x", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
+        {"collision_location", 0.97}, {"driving_actions", 0.86}, {"crash_type", 0.97}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);

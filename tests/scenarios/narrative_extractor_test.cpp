@@ -2204,5 +2204,18 @@ TEST(NarrativeExtractorTest, WhatCameLastBeforeTheCrashStoppedOrSlowing) {
   EXPECT_EQ(rolled.vehicles[1].pre_event.value, Movement::kSlowing);
 }
 
+TEST(NarrativeExtractorTest, TheContactsOwnClauseNamesTheStruckSide) {
+  // "The rear of V1 slid out ..., and the front of V2 struck the right side
+  // of V1": V1's right side, not the rear that slid (nor the back that
+  // later hit a tree).
+  const auto r = kExtractor.Extract(
+      "The crash occurred on a two-lane rural road in a curve. V1, a 1996 Mitsubishi Eclipse, was eastbound. V2, a "
+      "2001 Ford Explorer, was westbound. The rear of V1 slid out to the right, V1 rotated counterclockwise and "
+      "crossed the centerline, and the front of V2 struck the right side of V1 in the westbound lane. V1 then went "
+      "off the road and the back of V1 struck a tree.");
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+}
+
 }  // namespace
 }  // namespace accsim
