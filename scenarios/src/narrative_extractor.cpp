@@ -2253,7 +2253,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // In a sentence about a vehicle, a median is where it went ("stopped
       // again in the median"); the road is divided only when said so.
       static const regex kSaysDivided(
-          R"(\bdivided\b|\bdual carriageway\b|\bwith an? (?:[\w-]+ ){0,3}median\b|\bseparated by an? (?:[\w-]+ ){0,3}median\b|\bmedian[- ]divided\b|\bmedian (?:wall|barrier|guardrail|guard rail|cable)\b|\b(?:center|centre|concrete|raised) median\b)");
+          R"(\bdivided\b|\bdual carriageway\b|\bwith an? (?:[\w-]+ ){0,3}median\b|\bseparated (?:from [^.;,]{0,40}? )?by an? (?:[\w-]+ ){0,3}median\b|\bmedian[- ]divided\b|\bmedian (?:wall|barrier|guardrail|guard rail|cable)\b|\b(?:center|centre|concrete|raised) median\b)");
       if (!s.refs.empty() && !Has(s.text, kSaysDivided)) continue;
       divided = true;
     }

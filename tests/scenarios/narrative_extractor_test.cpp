@@ -2217,5 +2217,17 @@ TEST(NarrativeExtractorTest, TheContactsOwnClauseNamesTheStruckSide) {
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
 }
 
+TEST(NarrativeExtractorTest, LanesSeparatedFromTheOtherDirectionByAMedian) {
+  // Said in V1's own sentence: "with two westbound lanes separated from the
+  // two eastbound lanes by a wide grass median".
+  const auto r = kExtractor.Extract(
+      "Vehicle one (V1 - case vehicle), a 2005 Honda Civic, was traveling west in the right lane of a limited "
+      "access interstate with two westbound lanes separated from the two eastbound lanes by a wide depressed grass "
+      "median. Vehicle two (V2), a 2004 Chevrolet Suburban, was traveling west in the left lane. V1 drifted to the "
+      "left and the left side of V1 contacted the right side of V2.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
