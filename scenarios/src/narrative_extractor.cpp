@@ -1000,7 +1000,7 @@ string SubjectRoad(const string& s, size_t pos) {
 string RoadTravelledOn(const string& full) {
   const string t = BeforeTheTurn(full);
   // "in the right lane (lane one) of the highway".
-  static const regex kOn(R"(\b(?:on|along|down|up|from|onto|lanes?(?:\s*\([^)]*\))? of)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" + RoadNoun() + R"(\b)");
+  static const regex kOn(R"(\b(?:on|along|down|up|from|onto|lanes?(?:\s*\([^)]*\))? of)\s+(?:the|a|an)\s+(?:[\w/-]+,?\s+){0,3}?)" + RoadNoun() + R"(\b)");
   smatch m;
   return std::regex_search(t, m, kOn) ? m[1].str() : string();
 }
@@ -2407,8 +2407,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         static const regex kOnRoadNounAfter(
             R"(^\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:on|for|along)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
             R"(\b)");
+        // ... or just before it: "and on the side road 48 kmh".
+        static const regex kOnRoadNounBefore(R"(\b(?:on|for|along)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
+                                             R"(\s*,?\s*$)");
         smatch rn;
-        const string road = std::regex_search(tail, rn, kOnRoadNounAfter) ? rn[1].str() : ClauseRoad(s.text, pos);
+        const string just_before = Before(s.text, pos, 40);
+        const string road = std::regex_search(tail, rn, kOnRoadNounAfter)          ? rn[1].str()
+                            : std::regex_search(just_before, rn, kOnRoadNounBefore) ? rn[1].str()
+                                                                                    : ClauseRoad(s.text, pos);
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
                           inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++, road,
                           named_at(static_cast<size_t>(&s - sentences.data()), pos)});

@@ -116,6 +116,9 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_x", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.86}, {"crash_type", 0.97}}},
+      {"nmvccs_style_y", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+        {"collision_location", 0.97}, {"driving_actions", 0.92}, {"crash_type", 0.92}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -135,7 +138,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
   const std::map<std::string, double> floors = {{"participant_count", 0.97}, {"speed_limit", 0.78},
                                                 {"lane_count", 0.95},        {"collision_location", 0.95},
                                                 {"driving_actions", 0.90},   {"crash_type", 0.92}};
-  for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v"}) {
+  for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v", "ciren_style_z"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});

@@ -2229,5 +2229,21 @@ TEST(NarrativeExtractorTest, LanesSeparatedFromTheOtherDirectionByAMedian) {
   EXPECT_EQ(r.road.lanes_per_direction.value, 2);
 }
 
+TEST(NarrativeExtractorTest, ALimitAfterItsRoadAndARoadAfterCommas) {
+  auto limit_mph = [](const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
+  // "and on the side road 48 KMPH": the road just before the value.
+  EXPECT_NEAR(limit_mph("The crash occurred at a T-intersection of a four lane roadway and a two lane side road. The "
+                        "posted speed limit on the four lane roadway was 72 KMPH (45 MPH) and on the side road 48 KMPH "
+                        "(30 MPH). Vehicle #1 was traveling west on the side road and turned left. Vehicle #2 was "
+                        "traveling north on the four lane roadway. The front of Vehicle #2 struck Vehicle #1."),
+              30.0, 0.5);
+  // "on a two-lane, two-way residential street": V1's road through commas.
+  EXPECT_NEAR(limit_mph("V1, a 2001 Ford Focus, was stopped at a stop sign facing north on a two-lane, two-way "
+                        "residential street at a T-intersection with an east/west five-lane roadway. The posted speed "
+                        "limit was 64 kmph (40 mph) on the five-lane roadway and 40 kmph (25 mph) on the residential "
+                        "street. V2 was traveling east. V1 pulled out and the front of V2 struck the left side of V1."),
+              25.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
