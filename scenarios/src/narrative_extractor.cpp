@@ -1909,6 +1909,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           }
           continue;
         }
+        // "a 2-lane roadway that widened to 3 lanes on each approach to the
+        // intersection": the junction's count replaces the totals before it.
+        static const regex kWidenedTo(R"(\b(?:widen\w*|flare\w*|expand\w*|increas\w*)\s+(?:out\s+)?to\s+$)");
+        if (Has(Before(s.text, static_cast<size_t>(it->position()), 20), kWidenedTo)) {
+          const size_t at = static_cast<size_t>(it->position());
+          const int owner = owner_at(s, at);
+          roads.erase(std::remove_if(roads.begin(), roads.end(),
+                                     [&](const RoadStatement& o) {
+                                       return o.sentence == i && o.pos < at && o.owner == owner && o.total &&
+                                              !o.per_direction && !o.directional;
+                                     }),
+                      roads.end());
+        }
         add(*it, static_cast<size_t>(it->position()), n, 0, 0);
       }
       // "1 northbound lane, 1 southbound lane and a northbound left-turn
@@ -1943,25 +1956,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) {
       return a.sentence != b.sentence ? a.sentence < b.sentence : a.pos < b.pos;
     });
-    // "a 2-lane roadway that widened to 3 lanes on each approach to the
-    // intersection": the junction's count replaces the one before it.
-    {
-      static const regex kWidenedTo(R"(\b(?:widen\w*|flare\w*|expand\w*|increas\w*)\s+(?:out\s+)?to\s+$)");
-      std::vector<bool> superseded(roads.size(), false);
-      for (size_t k = 0; k < roads.size(); ++k) {
-        const RoadStatement& w = roads[k];
-        if (!w.total || !Has(Before(sentences[w.sentence].text, w.pos, 20), kWidenedTo)) continue;
-        for (size_t j = 0; j < k; ++j) {
-          const RoadStatement& o = roads[j];
-          if (o.sentence == w.sentence && o.owner == w.owner && o.total && !o.per_direction && !o.directional) superseded[j] = true;
-        }
-      }
-      size_t kept = 0;
-      for (size_t k = 0; k < roads.size(); ++k) {
-        if (!superseded[k]) roads[kept++] = roads[k];
-      }
-      roads.resize(kept);
-    }
     // V1's road: stated in V1's own segment, else the road on V1's axis, else
     // the first road not tied to another vehicle (the crash road is
     // described first).

@@ -1725,13 +1725,22 @@ TEST(NarrativeExtractorTest, EachDirectionFirstAndAStrikeAtTheMouthOfADrive) {
 }
 
 TEST(NarrativeExtractorTest, TheContactsClauseNamesTheStruckArea) {
-  const auto r = kExtractor.Extract(
-      "Vehicle #1, a 1998 Acura Integra, was westbound negotiating the curve. Vehicle #2, a 2005 Chevrolet Tahoe, was "
-      "eastbound negotiating the same curve. The rear of the Acura slid out and the car rotated counterclockwise "
-      "across the center line into the eastbound lane, where the front of the Tahoe struck the right side of the "
-      "Acura.");
-  EXPECT_EQ(r.crash.striking.value, "V2");
-  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  // After "where", and after ", and": V1's right side, not the rear that
+  // slid out before it (nor the back that later hit a tree).
+  for (const char* text :
+       {"Vehicle #1, a 1998 Acura Integra, was westbound negotiating the curve. Vehicle #2, a 2005 Chevrolet Tahoe, "
+        "was eastbound negotiating the same curve. The rear of the Acura slid out and the car rotated "
+        "counterclockwise across the center line into the eastbound lane, where the front of the Tahoe struck the "
+        "right side of the Acura.",
+        "The crash occurred on a two-lane rural road in a curve. V1, a 1996 Mitsubishi Eclipse, was eastbound. V2, a "
+        "2001 Ford Explorer, was westbound. The rear of V1 slid out to the right, V1 rotated counterclockwise and "
+        "crossed the centerline, and the front of V2 struck the right side of V1 in the westbound lane. V1 then "
+        "went off the road and the back of V1 struck a tree."}) {
+    SCOPED_TRACE(text);
+    const auto r = kExtractor.Extract(text);
+    EXPECT_EQ(r.crash.striking.value, "V2");
+    EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  }
 }
 
 TEST(NarrativeExtractorTest, RoadsNamedByTheirKindSingleTravelLanesAndACrossedDividedHighway) {
@@ -2202,19 +2211,6 @@ TEST(NarrativeExtractorTest, WhatCameLastBeforeTheCrashStoppedOrSlowing) {
       "V2 struck the left side of V1.");
   ASSERT_EQ(rolled.vehicles.size(), 2u);
   EXPECT_EQ(rolled.vehicles[1].pre_event.value, Movement::kSlowing);
-}
-
-TEST(NarrativeExtractorTest, TheContactsOwnClauseNamesTheStruckSide) {
-  // "The rear of V1 slid out ..., and the front of V2 struck the right side
-  // of V1": V1's right side, not the rear that slid (nor the back that
-  // later hit a tree).
-  const auto r = kExtractor.Extract(
-      "The crash occurred on a two-lane rural road in a curve. V1, a 1996 Mitsubishi Eclipse, was eastbound. V2, a "
-      "2001 Ford Explorer, was westbound. The rear of V1 slid out to the right, V1 rotated counterclockwise and "
-      "crossed the centerline, and the front of V2 struck the right side of V1 in the westbound lane. V1 then went "
-      "off the road and the back of V1 struck a tree.");
-  EXPECT_EQ(r.crash.striking.value, "V2");
-  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
 }
 
 TEST(NarrativeExtractorTest, LanesSeparatedFromTheOtherDirectionByAMedian) {
