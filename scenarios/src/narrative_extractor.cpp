@@ -135,8 +135,21 @@ string Normalise(std::string_view in) {
   // "v1 (v1 - case vehicle)" and "the ford taurus (v1)" are one reference.
   static const regex kRepeat(R"(\bv([1-9])\s*\(\s*v\1\b[^()]{0,40}\))");
   s = std::regex_replace(s, kRepeat, "v$1");
-  static const regex kNamed(R"(\bthe\s+(?:(?:19|20)\d\d\s+)?[a-z][a-z0-9/&'. -]{1,40}?\s*\(\s*v([1-9])\s*\))");
-  s = std::regex_replace(s, kNamed, "v$1");
+  // The name is the last "the" before the number, within its sentence: in
+  // "rest in the northbound lanes. the mercury sable (v1) was driven" only
+  // "the mercury sable" is v1.
+  // A name with its model year is the vehicle's description, kept in the
+  // usual form: "the 2002 dodge caravan (v1) was southbound" reads as "v1, a
+  // 2002 dodge caravan, was southbound".
+  static const regex kNamed(
+      R"(\bthe\s+((?:(?:19|20)\d\d\s+)?[a-z](?:(?!\.\s|\bthe\s)[a-z0-9/&'. -]){1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
+  s = ReplaceWith(s, kNamed, [](const std::smatch& m) {
+    const string name = m[1].str();
+    const bool year = name.size() > 5 && (name.compare(0, 2, "19") == 0 || name.compare(0, 2, "20") == 0) &&
+                      std::isdigit(static_cast<unsigned char>(name[2])) && std::isdigit(static_cast<unsigned char>(name[3])) && name[4] == ' ';
+    if (year) return "v" + m[2].str() + ", a " + name + ",";
+    return "v" + m[2].str() + (m[3].matched ? m[3].str() : string());
+  });
   return s;
 }
 
@@ -303,7 +316,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\b(?:the|its|his|her) driver,\s+an?\s+[^,;()]{0,40},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -544,6 +557,7 @@ struct MovementEvidence {
   bool slowing = false, straight = false;
   bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
   bool coded_lane_change = false, other_says_stopped = false;
+  bool coded_adjacent = false;  // its critical event: another vehicle from an adjacent lane, same direction
   bool rolled_stop = false, no_stop = false;
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
   bool stopped_again = false;  // "moved forward ... then stopped again"
@@ -558,11 +572,16 @@ struct MovementEvidence {
 };
 
 // Reads one piece of text about a vehicle for movement statements.
-void ReadMovement(const string& t, MovementEvidence& e) {
+void ReadMovement(const string& text, MovementEvidence& e) {
+  // What a driver saw another vehicle do is that vehicle's movement: "she
+  // stated ... the car turned right in front of her".
+  static const regex kOtherInFront(
+      R"(\b(?:the|a|an|another|some)\s+(?:other\s+)?[a-z-]+\s+(?:[\w-]+\s+){0,5}?in front of (?:him|her|me|them|us)\b)");
+  const string t = std::regex_replace(text, kOtherInFront, " ");
   static const regex kStopState(
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(
-      R"(\bstop(?:ped|s)?\b[^.]{0,60}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross)\w*)");
+      R"(\bstop(?:ped|s)?\b[^.]{0,90}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(
       R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed (?:down )?but (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
@@ -648,7 +667,11 @@ void ReadMovement(const string& t, MovementEvidence& e) {
   if (Has(t, kInCurve)) e.in_curve = true;
   if (Has(t, kBack)) e.back = true;
   if (Has(t, kPass)) e.pass = true;
-  if (Has(t, kSlow)) e.slowing = true;
+  // "she had slowed as she approached the light, but it turned green ...
+  // and continued": the slowing was over before the critical event.
+  static const regex kSlowThenGo(
+      R"(\bslow(?:ed|ing)\b[^.]{0,90}?\b(?:but|then|and)\b[^.]{0,60}?\b(?:continued|proceeded|accelerated|sped up|resumed)\b)");
+  if (Has(t, kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
   static const regex kStarted(
       R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
@@ -674,6 +697,9 @@ void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other
   if (Has(t, kSelfStraight)) self.coded_straight = true;
   if (Has(t, kSelfBack)) self.coded_back = true;
   if (Has(t, kSelfLane)) self.coded_lane_change = true;
+  static const regex kOtherFromAdjacent(
+      R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,60}?\bfrom (?:an |the )?adjacent lane\b|\bencroach\w*[^.]{0,40}?\bfrom (?:an |the )?adjacent lane\b)");
+  if (Has(t, kOtherFromAdjacent)) self.coded_adjacent = true;
   if (other && Has(t, kOtherStopped)) other->other_says_stopped = true;
 }
 
@@ -1372,6 +1398,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // another road user from its first word.
     auto cut = [&](size_t from, size_t to) {
       string t = s.text.substr(from, to - from);
+      // A coded event is the vehicle's own whole ("... for v2 was other
+      // vehicle encroachment from adjacent lane").
+      if (s.kind == Kind::kCoding) return t;
       size_t skip = from == 0 && (starts.empty() || starts.front().pos > 0) ? 0 : std::min<size_t>(t.size(), 3);
       // The segment's own description ("v2, a pickup truck, was ...") is not
       // another road user.
@@ -2839,6 +2868,22 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (!narrative[bi + 1].intent_left && !narrative[bi + 1].intent_right && !narrative[bi + 1].turn_meant) {
       r.vehicles[bi].pre_event.Set(Movement::kStraight, Provenance::kInferred);
     }
+  }
+  // A vehicle about to turn that another, going its way, passes or
+  // encroaches on from the next lane is coded going straight, whatever it did
+  // before its turn (straight/0: "she had stopped prior to turning";
+  // crossing/21): the other vehicle's move is the critical event.
+  for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    VehicleRecord& v = r.vehicles[i];
+    const MovementEvidence& told = narrative[i + 1];
+    const bool about_to_turn = Turning(v.movement.value) || told.intent_left || told.intent_right || told.turn_meant;
+    if (!about_to_turn || told.coded_turn_left || told.coded_turn_right || told.coded_straight) continue;
+    bool passed = told.coded_adjacent;
+    for (size_t j = 0; j < r.vehicles.size(); ++j) {
+      const VehicleRecord& o = r.vehicles[j];
+      if (j != i && narrative[j + 1].pass && o.travel.value && o.travel.value == v.travel.value) passed = true;
+    }
+    if (passed) v.pre_event.Set(Movement::kStraight, Provenance::kInferred);
   }
   // A turn with nothing told before it (no stop, no slowing) is its own
   // pre-event movement (t/8, straight/12), except where NASS codes what the

@@ -2241,5 +2241,76 @@ TEST(NarrativeExtractorTest, ALimitAfterItsRoadAndARoadAfterCommas) {
               25.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, AVehicleNamedBeforeItsNumberIsNamedWithinItsSentence) {
+  // "the northbound lanes. The Mercury Sable (Vehicle #1)": the name is
+  // "the mercury sable", not everything from the previous sentence's "the".
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle #1, a 1996 Mercury Sable, was traveling west and rolled through the stop sign while attempting a left "
+      "turn. Vehicle #2, a 2003 Jeep Liberty, was traveling north. The front of Vehicle #2 impacted the left side of "
+      "Vehicle #1. Both vehicles came to rest in the northbound lanes. The Mercury Sable (Vehicle #1) was driven by a "
+      "belted 34 year old female. She stated she slowed down but did not come to a complete stop. The Jeep Liberty "
+      "(Vehicle #2) was driven by a 58 year old male.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kSlowing);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
+  // "The 2002 Dodge Caravan (V1) was southbound": its description, so "the
+  // dodge" later is V1.
+  const AccidentRecord d = kExtractor.Extract(
+      "The 2002 Dodge Caravan (V1) was southbound on a two-lane county road. The 2004 Ford Escape (V2) was eastbound "
+      "on the highway. The Dodge's driver, a 40-year-old woman taking her mother to an appointment, stopped at the "
+      "stop sign and then turned left to travel east. As the Dodge entered the eastbound lane the front of the Ford "
+      "struck its right side. The Ford stopped in the eastbound lane.");
+  ASSERT_EQ(d.vehicles.size(), 2u);
+  EXPECT_EQ(d.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(d.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(d.vehicles[1].pre_event.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, WhatADriverSawAnotherVehicleDoIsNotTheirOwnMovement) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was a 2000 Buick Century traveling eastbound intending to turn left into the parking lot. V2, a 1995 Honda "
+      "Accord, was traveling westbound. V1 slowed and began to turn left into the parking lot and the front of V2 "
+      "struck the right side of V1. V2 was driven by a 26-year-old female. She stated that she was traveling about "
+      "40 MPH and the car turned right in front of her.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+}
+
+TEST(NarrativeExtractorTest, ASlowingOrStopThatEndedBeforeTheCrashIsNotThePreEventMovement) {
+  // "had slowed ... but it turned green so she ... continued".
+  const AccidentRecord slowed = kExtractor.Extract(
+      "V1 was pulling out of a driveway. V2 was traveling south. V2's driver stated that she had slowed as she "
+      "approached the traffic light, but it turned green so she did not come to a complete stop and continued. The "
+      "front of V2 struck the left side of V1.");
+  ASSERT_EQ(slowed.vehicles.size(), 2u);
+  EXPECT_EQ(slowed.vehicles[1].pre_event.value, Movement::kStraight);
+  // A long stop told before the vehicle went on: started, not stopped.
+  const AccidentRecord stopped = kExtractor.Extract(
+      "V1 was traveling north through the intersection. V2 was traveling east. The front of V1 struck the left side "
+      "of V2. The driver of V2 stated that he stopped for the stop sign for approximately 5 seconds and looked both "
+      "directions before proceeding through the intersection.");
+  ASSERT_EQ(stopped.vehicles.size(), 2u);
+  EXPECT_NE(stopped.vehicles[1].pre_event.value, Movement::kStopped);
+}
+
+TEST(NarrativeExtractorTest, ATurnerPassedFromTheNextLaneIsCodedGoingStraight) {
+  // straight/0 of the development set: stopped before turning, passed on the
+  // left, coded going straight (the passer's move is the critical event).
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 1995 Chevrolet Lumina was traveling eastbound. V2, a 2004 Chevrolet Trailblazer was also traveling "
+      "eastbound on the same roadway. V2 was attempting to make a left-hand turn into a private drive. While "
+      "turning V1 attempted to pass V2 on the left-hand side contacting its front to the left side of V2. The "
+      "driver of V2 was a 41-year old female who reported that she had stopped prior to turning. The Critical "
+      "Precrash Event for the driver of V1 was this vehicle traveling over left lane line on the left side of "
+      "travel. The Critical Precrash Event for the driver of V2 was other vehicle encroachment from adjacent lane "
+      "over left lane line.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
