@@ -816,7 +816,12 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
 // one-way streets 30. A road the report describes (`road_described`: its
 // lanes were counted) without naming any class gets 55, the statutory limit
 // outside towns in most states; with nothing described there is no prior.
-std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool road_described) {
+// A report that states its limits as a rule (`limits_told`: one quoting the
+// NASS coding, whose investigators always give the posted limit) and is
+// silent on this one is on an unposted town street: the statutory 30 mph
+// however many lanes (the development set's crossing/10, 17 and 19). CIREN
+// summaries never state a limit, so there the arterial's 45 stands.
+std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool road_described, bool limits_told) {
   static const regex kFreeway(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b|\bi-\d{1,3}\b)");
   static const regex kPrivate(
       R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)");
@@ -831,7 +836,7 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
   if (Has(scene, kPrivate)) return 15.0;
   if (Has(scene, kResidential)) return 25.0;
   if (Has(scene, kRural)) return 55.0;
-  if (Has(scene, kUrban)) return lanes_total >= 3 ? 45.0 : 30.0;
+  if (Has(scene, kUrban)) return lanes_total >= 3 && !limits_told ? 45.0 : 30.0;
   if (Has(scene, kOneWayStreet)) return 30.0;
   if (Has(scene, kHighway) || road_described) return 55.0;
   return std::nullopt;
@@ -841,7 +846,7 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
 // "side street", "county road", "highway", "stem".
 const string& RoadNoun() {
   static const string kNoun =
-      R"(((?:(?:county|state|rural|city|residential|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|parkway|turnpike|route|arterial|collector|stem|freeway|interstate|expressway)))";
+      R"(((?:(?:county|state|rural|city|residential|local|minor|secondary|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|parkway|turnpike|route|arterial|collector|stem|freeway|interstate|expressway)))";
   return kNoun;
 }
 
@@ -1407,6 +1412,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kOwnAppositive(R"(^v[1-9]\s*,\s*an?\s+[^,;]{0,60},)");
       smatch own;
       if (skip > 0 && std::regex_search(t, own, kOwnAppositive)) skip = static_cast<size_t>(own.length(0));
+      // "who was watching traffic to his left, started forward": the traffic
+      // it watched, told within commas, is not a new subject.
+      static const regex kWatchedTraffic(
+          R"(\b(watching|watched|checking|checked|looking at|looked at)\s+(?:the\s+)?(?:traffic|cars|vehicles)(?:\s+[\w']+){0,4}\s*,)");
+      t = std::regex_replace(t, kWatchedTraffic, "$1,");
       // What it tows is its own ("a 2004 mack tractor pulling a flatbed
       // semi-trailer was traveling south").
       static const regex kTowing(R"(\b(?:pulling|towing|hauling)\s+$)");
@@ -2433,10 +2443,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // ... or just before it: "and on the side road 48 kmh".
         static const regex kOnRoadNounBefore(R"(\b(?:on|for|along)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
                                              R"(\s*,?\s*$)");
+        // ... or posted itself: "meets a 4-lane undivided arterial posted at 64 kmh".
+        static const regex kRoadPostedAt(R"(\b)" + RoadNoun() +
+                                         R"(\s+(?:that was |which was |was |is )?(?:posted|signed|zoned)\s+(?:at|for)\s+$)");
         smatch rn;
         const string just_before = Before(s.text, pos, 40);
         const string road = std::regex_search(tail, rn, kOnRoadNounAfter)          ? rn[1].str()
                             : std::regex_search(just_before, rn, kOnRoadNounBefore) ? rn[1].str()
+                            : std::regex_search(just_before, rn, kRoadPostedAt) && !GenericRoad(rn[1].str()) ? rn[1].str()
                                                                                     : ClauseRoad(s.text, pos);
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
                           inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++, road,
@@ -2520,8 +2534,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         break;
       }
     }
-    auto mph = TypicalLimitMph(v1_text, r.road.lanes_total.value, false);
-    if (!mph) mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known());
+    const bool limits_told =
+        std::any_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
+    auto mph = TypicalLimitMph(v1_text, r.road.lanes_total.value, false, limits_told);
+    if (!mph) mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known(), limits_told);
     if (mph) {
       r.road.speed_limit_mps.Set(*mph * kMphToMps, Provenance::kInferred);
       r.road.speed_limit_unit.Set("mph", Provenance::kInferred);

@@ -2312,5 +2312,48 @@ TEST(NarrativeExtractorTest, ATurnerPassedFromTheNextLaneIsCodedGoingStraight) {
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, AnUnstatedLimitInTownIsTheStatutoryOneWhereReportsStateTheirLimits) {
+  auto limit_mph = [](const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
+  const std::string scene =
+      "The crash occurred at a signalized intersection in a downtown area. The east/west street was a one-way "
+      "westbound roadway with three travel lanes. V1 was westbound in the middle lane. V2 was westbound in the right "
+      "lane. V1 began a right turn from the middle lane and the front of V2 struck the right side of V1.";
+  // A report quoting the NASS coding gives its posted limits: silence is
+  // the unposted town street's 30 mph, however many lanes.
+  EXPECT_NEAR(limit_mph(scene + " The Critical Precrash Event for V1 was this vehicle traveling, turning right at "
+                                "intersection."),
+              30.0, 0.5);
+  // A summary that never states limits keeps the arterial's prior.
+  EXPECT_NEAR(limit_mph(scene), 45.0, 0.5);
+}
+
+TEST(NarrativeExtractorTest, ALocalStreetAndARoadPostedByName) {
+  auto limit_mph = [](const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
+  // "the local street" is V1's road, told apart from the arterial.
+  EXPECT_NEAR(limit_mph("The crash occurred at a T-intersection where a two-lane local street ends at an east/west "
+                        "arterial. The arterial had three lanes and a posted speed limit of 72 km/h (45 mph). The local "
+                        "street was posted at 48 km/h (30 mph) and controlled by a stop sign. V1 was northbound on the "
+                        "local street and stopped at the stop sign. V2 was westbound on the arterial. V1 turned left "
+                        "and the front of V2 struck the left side of V1."),
+              30.0, 0.5);
+  // "meets a four-lane undivided arterial posted at 64 km/h": the
+  // arterial's, not the first road of the sentence.
+  EXPECT_NEAR(limit_mph("The crash occurred where a two-lane side street from the south meets an east/west four-lane "
+                        "undivided arterial posted at 64 km/h (40 mph). The side street was posted at 48 km/h (30 mph). "
+                        "V1 was northbound on the side street and turned right. V2 was eastbound on the arterial. The "
+                        "front of V2 struck the rear of V1."),
+              30.0, 0.5);
+}
+
+TEST(NarrativeExtractorTest, TheTrafficADriverWatchedIsNotANewSubject) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle 2, a 2003 Volkswagen Jetta, was northbound on the local street, stopped at the stop sign and waiting "
+      "to turn left. Vehicle 1, a 1998 Toyota 4Runner, was stopped behind it. The Jetta started forward, then "
+      "stopped again for a westbound car. The driver of the Toyota, who was watching traffic to his left, started "
+      "forward at the same time and struck the rear of the Jetta.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_NE(r.vehicles[0].pre_event.value, Movement::kStopped);
+}
+
 }  // namespace
 }  // namespace accsim
