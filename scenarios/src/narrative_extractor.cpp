@@ -557,6 +557,7 @@ struct MovementEvidence {
   bool slowing = false, straight = false;
   bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
   bool coded_lane_change = false, other_says_stopped = false;
+  bool other_says_decelerating = false;  // the follower's critical event: this one "traveling ... while decelerating"
   bool coded_adjacent = false;  // its critical event: another vehicle from an adjacent lane, same direction
   bool rolled_stop = false, no_stop = false;
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
@@ -581,7 +582,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kStopState(
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(
-      R"(\bstop(?:ped|s)?\b[^.]{0,90}?\b(?:and|then|before)\s+(?:then\s+)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross)\w*)");
+      R"(\bstop(?:ped|s)?\b[^.]{0,90}?\b(?:and|then|before)\s+(?:then\s+)?(?:(?:was|had)\s+(?:just\s+)?)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross|moving)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(
       R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed (?:down )?but (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
@@ -701,6 +702,8 @@ void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other
       R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,60}?\bfrom (?:an |the )?adjacent lane\b|\bencroach\w*[^.]{0,40}?\bfrom (?:an |the )?adjacent lane\b)");
   if (Has(t, kOtherFromAdjacent)) self.coded_adjacent = true;
   if (other && Has(t, kOtherStopped)) other->other_says_stopped = true;
+  static const regex kOtherDecelerating(R"(\bwhile decelerating\b)");
+  if (other && Has(t, kOtherDecelerating)) other->other_says_decelerating = true;
 }
 
 struct MovementDecision {
@@ -756,6 +759,10 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   }
   // A stop before the critical event is the pre-crash movement even when a
   // turn was intended afterwards (how NASS codes it).
+  // Unless the investigators coded it still moving: a lead struck "while
+  // decelerating" to a stop was going straight (crossing/23, straight/17).
+  const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant;
+  if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
   if (e.stopped && (!e.started || e.stopped_again)) return both(Movement::kStopped, Provenance::kStated);
   // A lane change that is itself the vehicle's coded critical event ("this
   // vehicle traveling over the lane line") was preceded by driving on:

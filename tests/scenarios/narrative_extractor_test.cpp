@@ -2355,5 +2355,31 @@ TEST(NarrativeExtractorTest, TheTrafficADriverWatchedIsNotANewSubject) {
   EXPECT_NE(r.vehicles[0].pre_event.value, Movement::kStopped);
 }
 
+TEST(NarrativeExtractorTest, AStopThatEndedInMovingOffOrACodedDecelerationIsGoingStraight) {
+  // "had been stopped ... and was moving into the intersection": moving off.
+  const AccidentRecord off = kExtractor.Extract(
+      "The crash occurred at a signalized intersection of two two-lane roads. V1 was traveling west. V2 had been "
+      "stopped in the northbound lane for a red signal and was moving into the intersection after the signal turned "
+      "green. The front of V1 struck the right side of V2.");
+  ASSERT_EQ(off.vehicles.size(), 2u);
+  EXPECT_EQ(off.vehicles[1].pre_event.value, Movement::kStraight);
+  // The follower's coded event says the lead was still decelerating when
+  // struck, whatever the driver says of her stop.
+  const std::string lead =
+      "The crash occurred on a two-lane road approaching a signal. V2 was traveling east when the signal turned "
+      "yellow, and the driver of V2 braked to stop for the signal. V1 was traveling east behind V2. The front of V1 "
+      "struck the back of V2. The driver of V2 stated that she stopped for the light.";
+  const AccidentRecord coded = kExtractor.Extract(
+      lead + " The Critical Precrash Event for V1 was other motor vehicle in lane, traveling in same direction while "
+             "decelerating.");
+  ASSERT_EQ(coded.vehicles.size(), 2u);
+  EXPECT_EQ(coded.vehicles[1].pre_event.value, Movement::kStraight);
+  // Coded as stopped, it stays stopped.
+  const AccidentRecord stopped = kExtractor.Extract(
+      lead + " The Critical Precrash Event for V1 was other motor vehicle in lane, other vehicle stopped.");
+  ASSERT_EQ(stopped.vehicles.size(), 2u);
+  EXPECT_EQ(stopped.vehicles[1].pre_event.value, Movement::kStopped);
+}
+
 }  // namespace
 }  // namespace accsim
