@@ -600,7 +600,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       // "to get into position for a right turn into a plaza".
       R"(\bfor (?:a|an|the|his|her|its) (?:[\w-]+ )?(?:left|right) turn\b)");
   static const regex kLaneChange(
-      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|make|enter|exit|pass|go around)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
@@ -609,7 +609,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
-      R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|began|started|made|moved)\b)");
+      R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -628,7 +628,10 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // "was almost stopped when he was hit" is no stop.
   static const regex kAlmostStopped(
       R"(\b(?:almost|nearly|virtually|practically)\s+(?:stopped|at a stop|to a stop|come to a stop|came to a stop)\b)");
-  const string stops = std::regex_replace(t, kAlmostStopped, " ");
+  // Nor is "to go around the stopped vehicle": a stopped thing it passed.
+  static const regex kStoppedObject(
+      R"(\b(?:the|a|an|another|other|several)\s+(?:[\w-]+\s+)?stopped\s+(?:[\w-]+\s+)?(?:vehicles?|cars?|trucks?|vans?|minivans?|suvs?|pickups?|sedans?|bus|buses|traffic)\b)");
+  const string stops = std::regex_replace(std::regex_replace(t, kAlmostStopped, " "), kStoppedObject, " ");
   // "moved forward ... and then stopped again": the last word is the stop.
   static const regex kStoppedAgain(R"(\b(?:stopped|came to a stop|halted)\s+again\b)");
   if (Has(stops, kStoppedAgain)) e.stopped_again = true;
@@ -662,7 +665,12 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // not across the centre line.
   static const regex kIntoTheirLane(R"(\binto\s+v[1-9]'?s\s+lane\b)");
   static const regex kBeside(R"(\blane to (?:the|v[1-9]'?s|his|her|its|their) (?:left|right)\b|\b(?:adjacent|next) lane\b)");
-  if (Has(t, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
+  // A lane change told as long past is not the pre-crash movement ("his
+  // turn signal was still on from moving into the right lane a block earlier").
+  static const regex kEarlierMove(
+      R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b)");
+  const string lanes = std::regex_replace(t, kEarlierMove, " ");
+  if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   if (Has(t, kMerge)) e.merge = true;
   static const regex kInCurve(R"(\b(?:entered|entering|negotiat\w+|rounding|round|into)\s+(?:the|a)\s+(?:[\w-]+\s+){0,2}?curve\b)");
   if (Has(t, kInCurve)) e.in_curve = true;
@@ -672,7 +680,11 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // and continued": the slowing was over before the critical event.
   static const regex kSlowThenGo(
       R"(\bslow(?:ed|ing)\b[^.]{0,90}?\b(?:but|then|and)\b[^.]{0,60}?\b(?:continued|proceeded|accelerated|sped up|resumed)\b)");
-  if (Has(t, kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
+  // Nor is a speed kept down for the weather ("he had slowed for the ice
+  // and was traveling about 35 mph"): it was driving on at that speed.
+  static const regex kSlowForConditions(
+      R"(\bslowed\s+(?:down\s+)?(?:for|because of|due to)\s+(?:the\s+)?(?:ice|icy|snow\w*|rain|fog\w*|weather|wet|slick|slippery|road conditions|conditions)\b)");
+  if (Has(std::regex_replace(t, kSlowForConditions, " "), kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
   static const regex kStarted(
       R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
@@ -3016,12 +3028,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // (A named drive beside a midblock crash places it; "missed the entrance
     // to a restaurant" does not.)
     static const regex kDrivewayWord(R"(\bdriveway\b|\balley\b|\bparking lot\b)");
+    // Nor does a drive some other vehicle was turning into ("a vehicle
+    // ahead of v1 had stopped to turn left into an alley").
+    static const regex kOthersDrive(
+        R"(\b(?:a|an|another)\s+(?:[\w-]+\s+){0,2}?(?:vehicle|car|truck|van|pickup|suv)\b[^.;]{0,80}?\b(?:into|out of|from)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:driveway|alley|parking lot)\b)");
     // A crash on a ramp leading to an intersection is on the ramp.
     static const regex kOnTheRamp(R"(\b(?:on|onto|along|of|in)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
     static const regex kMidblock(R"(\bmid-?block\b|\bnon-?junction\b|\bnot (?:at|in|near) (?:an|the) (?:intersection|junction)\b)");
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
-    } else if (Has(pre, kMidblock) && !Has(pre, kDrivewayWord)) {
+    } else if (Has(pre, kMidblock) && !Has(std::regex_replace(pre, kOthersDrive, " "), kDrivewayWord)) {
       r.crash.location.Set(CrashLocation::kSegment, Provenance::kStated);
     } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersectionStrong) ||
                RanTrafficControl(pre) || (Has(pre, kAtIntersection) && !Has(pre, kOnTheRamp))) {

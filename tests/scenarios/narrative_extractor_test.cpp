@@ -2381,5 +2381,51 @@ TEST(NarrativeExtractorTest, AStopThatEndedInMovingOffOrACodedDecelerationIsGoin
   EXPECT_EQ(stopped.vehicles[1].pre_event.value, Movement::kStopped);
 }
 
+TEST(NarrativeExtractorTest, WhatWasLongPastOrSomeoneElsesIsNotThePreCrashMovement) {
+  auto pre = [](const std::string& text, size_t i) {
+    const AccidentRecord r = kExtractor.Extract(text);
+    EXPECT_GT(r.vehicles.size(), i) << text;
+    return r.vehicles.size() > i ? r.vehicles[i].pre_event.value : Movement::kStraight;
+  };
+  // "to go around the stopped vehicle": the stopped one is another.
+  const std::string around =
+      "The crash occurred mid-block on a four-lane city street with two lanes in each direction. V1 was traveling "
+      "east in lane two. A vehicle ahead of V1 in lane two had stopped to turn left into an alley. V1 moved to the "
+      "right to go around the stopped vehicle, and the right front of V1 struck the left side of V2, which was "
+      "traveling east in lane one.";
+  EXPECT_NE(pre(around, 0), Movement::kStopped);
+  // ... and the alley it was turning into does not put the crash there.
+  EXPECT_EQ(kExtractor.Extract(around).crash.location.value, CrashLocation::kSegment);
+  // A lane change a block earlier.
+  EXPECT_EQ(pre("The crash occurred at a T-intersection of a four-lane road and a residential street. V1 stopped at "
+                "the stop sign on the street and pulled out to turn right. V2 was traveling east in lane one with its "
+                "right turn signal on. The front of V2 struck the left side of V1. The driver of V2 stated that he "
+                "was going straight and that his signal was still on from moving into the right lane a block "
+                "earlier.",
+                1),
+            Movement::kStraight);
+  // A speed kept down for the ice.
+  EXPECT_EQ(pre("The crash occurred on a two-lane rural road. V1 was westbound in a curve when it lost traction on the "
+                "ice and slid into the eastbound lane. V2 was eastbound. The front of V2 struck the right side of V1. "
+                "The driver of V2 said he had slowed for the ice and was traveling about 35 mph.",
+                1),
+            Movement::kStraight);
+  // "slowed down and began to weave within its lane": no slowing to turn.
+  EXPECT_EQ(pre("The crash occurred on a two-lane undivided highway. V1 was traveling west. Witnesses stated that "
+                "it slowed down and began to weave within its lane. V1 then drifted left across the center line. V2 "
+                "was traveling east. The front of V1 struck the front of V2.",
+                0),
+            Movement::kStraight);
+  // "moved to the right to prepare for a right turn at the next block" is
+  // a lane change, not the turn.
+  const AccidentRecord shift = kExtractor.Extract(
+      "The crash occurred on a four-lane undivided arterial. V1 was northbound in the left lane. V2 was northbound "
+      "in the right lane, slightly behind V1. The driver of V1 moved to the right to prepare for a right turn at the "
+      "next block, and the right side of V1 struck the left front of V2.");
+  ASSERT_EQ(shift.vehicles.size(), 2u);
+  EXPECT_EQ(shift.vehicles[0].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(shift.crash.type.value, CrashType::kSideswipeSame);
+}
+
 }  // namespace
 }  // namespace accsim
