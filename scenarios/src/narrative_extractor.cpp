@@ -2287,6 +2287,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           if (!in_phrase && !appositive) return false;
         }
       }
+      // "a four-lane divided boulevard and a two-lane undivided city
+      // street", V1 on the boulevard: the word is the other road's.
+      if (distinctive && phrase.find(v1_road) == string::npos) {
+        static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
+        const size_t v1_at = cleaned.find(v1_road);
+        const bool before_and = v1_at != string::npos && v1_at < from && cleaned.compare(from, 4, "and ") == 0;
+        const bool after_and = v1_at != string::npos && v1_at >= from + phrase.size() && next != string::npos;
+        if ((before_and || after_and) && Has(phrase, kRoadWord)) return false;
+      }
       std::optional<int> axis = AxisIn(phrase);
       if (!axis) axis = AxisIn(s.text);
       return !(at_junction && v1_axis >= 0 && axis && *axis != v1_axis);

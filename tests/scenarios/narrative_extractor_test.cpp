@@ -2427,5 +2427,27 @@ TEST(NarrativeExtractorTest, WhatWasLongPastOrSomeoneElsesIsNotThePreCrashMoveme
   EXPECT_EQ(shift.crash.type.value, CrashType::kSideswipeSame);
 }
 
+TEST(NarrativeExtractorTest, DividedOrUndividedBelongsToTheRoadItQualifies) {
+  auto lanes = [](const std::string& text) { return kExtractor.Extract(text).road; };
+  const std::string v1 =
+      " The boulevard had two eastbound and two westbound lanes separated by a grass median. V1 was traveling east "
+      "in the right lane of the boulevard. V2 was traveling north on the city street. The front of V1 struck the "
+      "left side of V2.";
+  const RoadRecord first = lanes(
+      "The crash occurred at the signalized intersection of a four-lane divided boulevard and a two-lane undivided "
+      "city street." + v1);
+  EXPECT_TRUE(first.divided.value);
+  EXPECT_EQ(first.lanes_per_direction.value, 2);
+  const RoadRecord second = lanes(
+      "The crash occurred at the signalized intersection of a two-lane undivided city street and a four-lane divided "
+      "boulevard." + v1);
+  EXPECT_TRUE(second.divided.value);
+  // Said of V1's own road, it holds.
+  EXPECT_FALSE(lanes("The crash occurred at the intersection of a four-lane undivided boulevard and a two-lane city "
+                     "street. V1 was traveling east on the boulevard. V2 was traveling north on the city street. The "
+                     "front of V1 struck the left side of V2.")
+                   .divided.value);
+}
+
 }  // namespace
 }  // namespace accsim
