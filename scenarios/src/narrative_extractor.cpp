@@ -564,6 +564,7 @@ struct MovementEvidence {
   bool stopped_again = false;  // "moved forward ... then stopped again"
   bool u_turn = false;
   bool in_curve = false;  // "entered the right curve at too great a speed"
+  bool drift = false;     // "drifted to the left into the left lane": no lane change meant
   bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
   bool turn_meant = false;  // a turn meant, its direction untold ("slowing to turn into the driveway")
   bool any_narrative() const {
@@ -671,6 +672,8 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b)");
   const string lanes = std::regex_replace(t, kEarlierMove, " ");
   if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
+  static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
+  if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
   if (Has(t, kMerge)) e.merge = true;
   static const regex kInCurve(R"(\b(?:entered|entering|negotiat\w+|rounding|round|into)\s+(?:the|a)\s+(?:[\w-]+\s+){0,2}?curve\b)");
   if (Has(t, kInCurve)) e.in_curve = true;
@@ -780,7 +783,8 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // vehicle traveling over the lane line") was preceded by driving on:
   // NASS codes that as the pre-event movement, as for turns.
   if (e.lane_change || n.coded_lane_change) {
-    const Movement before = n.coded_straight ? Movement::kStraight : Movement::kChangingLanes;
+    // So is a drift out of the lane, which nobody meant.
+    const Movement before = n.coded_straight || e.drift ? Movement::kStraight : Movement::kChangingLanes;
     return MovementDecision{Movement::kChangingLanes, before, Provenance::kStated};
   }
   // One that lost it in the ramp's curve before the merge was negotiating

@@ -2449,5 +2449,22 @@ TEST(NarrativeExtractorTest, DividedOrUndividedBelongsToTheRoadItQualifies) {
                    .divided.value);
 }
 
+TEST(NarrativeExtractorTest, ADriftOutOfTheLaneIsGoingStraightBeforeIt) {
+  const std::string scene =
+      "V1 was traveling west in the center lane of a six-lane freeway with three lanes in each direction. V2 was "
+      "westbound in the left lane, slightly behind V1. ";
+  const AccidentRecord drift = kExtractor.Extract(
+      scene + "The driver of V1 reached for a phone and V1 drifted to the left into the left lane. The front of V2 "
+              "struck the left side of V1.");
+  ASSERT_EQ(drift.vehicles.size(), 2u);
+  EXPECT_EQ(drift.vehicles[0].movement.value, Movement::kChangingLanes);  // the path the planner drives
+  EXPECT_EQ(drift.vehicles[0].pre_event.value, Movement::kStraight);
+  // A lane change the driver made stays one.
+  const AccidentRecord meant = kExtractor.Extract(
+      scene + "The driver of V1 signaled and moved into the left lane. The front of V2 struck the left side of V1.");
+  ASSERT_EQ(meant.vehicles.size(), 2u);
+  EXPECT_EQ(meant.vehicles[0].pre_event.value, Movement::kChangingLanes);
+}
+
 }  // namespace
 }  // namespace accsim
