@@ -121,8 +121,10 @@ string Normalise(std::string_view in) {
   }};
   s = ReplaceEach(s, kOrdinals);
   // Vehicle references: "vehicle #1", "vehicle no. 2", "veh. 3", "v-1", "unit 2".
-  // A number followed by a unit ("car 2 mph", "unit 3 lanes") is not a vehicle.
-  static const string kNotAUnit = R"((?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr)))";
+  // A number followed by a unit ("car 2 mph", "unit 3 lanes") is not a
+  // vehicle, nor a body style's ("a honda cr-v 4-door").
+  static const string kNotAUnit =
+      R"((?!\s*(?:mph|kmh|%|m\b|meters|feet|ft|seconds|minutes?|hours?|miles?|mi\b|lanes?|year|yr|-?doors?\b|-?dr\b)))";
   static const regex kVehicle(
       R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kVehicle, "v$1");
@@ -132,6 +134,11 @@ string Normalise(std::string_view in) {
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
   static const regex kOrdinalVehicle(R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b)");
   s = std::regex_replace(s, kOrdinalVehicle, "v$1");
+  // A CIREN summary that never numbers its case vehicle ("the case vehicle,
+  // a 2002 toyota camry, ... v2, a 2000 ford f-150"): the case vehicle is v1.
+  static const regex kAnyV1(R"(\bv1\b)");
+  static const regex kCaseVehicle(R"(\b(?:the\s+)?case vehicle\b(?!'))");
+  if (!Has(s, kAnyV1)) s = std::regex_replace(s, kCaseVehicle, "v1");
   // "v1 (v1 - case vehicle)" and "the ford taurus (v1)" are one reference.
   static const regex kRepeat(R"(\bv([1-9])\s*\(\s*v\1\b[^()]{0,40}\))");
   s = std::regex_replace(s, kRepeat, "v$1");
@@ -316,7 +323,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -441,11 +448,15 @@ std::optional<Compass> DirectionIn(const string& s) {
   // to go, not how it came.
   static const regex kIntended(
       R"(\b(?:intend\w*|intention|plann\w*|wanted|to turn|turn (?:left|right) and|to (?:go|travel|head|proceed))\b[^.,;]{0,30}$)");
+  // "waiting for westbound traffic to clear": the others' direction.
+  static const regex kOthersTraffic(R"(^\w+[- ]?bound\s+(?:[\w-]+\s+)?(?:traffic|vehicles|cars)\b)");
   std::optional<Compass> lane_direction;
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kDir); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
     const size_t at = static_cast<size_t>(m.position());
     if (m[2].matched && Has(Before(s, at, 50) + m[0].str(), kIntended)) continue;
+    static const regex kWaitedFor(R"(\b(?:waiting|waited|wait|yield\w*|watching|looking)\s+(?:for|to|at)\s+(?:the\s+|any\s+)?(?:oncoming\s+)?$)");
+    if (m[1].matched && (Has(s.substr(at, 40), kOthersTraffic) || Has(Before(s, at, 40), kWaitedFor))) continue;
     for (int g = 1; g <= 3; ++g) {
       if (!m[g].matched) continue;
       const bool turn = m[0].str().rfind("turn", 0) == 0;

@@ -2466,5 +2466,40 @@ TEST(NarrativeExtractorTest, ADriftOutOfTheLaneIsGoingStraightBeforeIt) {
   EXPECT_EQ(meant.vehicles[0].pre_event.value, Movement::kChangingLanes);
 }
 
+TEST(NarrativeExtractorTest, CaseSummaryWordingOfVehiclesAndTheirCourses) {
+  // "a 2003 honda cr-v 4-door utility vehicle" names no fourth vehicle.
+  const AccidentRecord body = kExtractor.Extract(
+      "Vehicle one (V1, case vehicle), a 2005 Chevrolet Cobalt 4-door sedan, was traveling west. Vehicle two (V2), "
+      "a 2003 Honda CR-V 4-door utility vehicle, was stopped ahead of V1 in the same lane. The front of V1 struck "
+      "the back of V2.");
+  EXPECT_EQ(body.vehicles.size(), 2u);
+  // "waiting for westbound traffic to clear" is not V2's course.
+  const AccidentRecord waiting = kExtractor.Extract(
+      "The case vehicle (V1) was traveling east in the eastbound lane of a two-lane rural road. V2 was stopped "
+      "ahead of V1 in the eastbound lane with its left turn signal on, waiting for westbound traffic to clear so "
+      "that it could turn left. The front of V1 struck the back of V2.");
+  ASSERT_EQ(waiting.vehicles.size(), 2u);
+  EXPECT_EQ(waiting.vehicles[1].travel.value, Compass::kEast);
+  EXPECT_EQ(waiting.crash.type.value, CrashType::kRearEnd);
+  // A case vehicle never numbered is V1.
+  const AccidentRecord unnumbered = kExtractor.Extract(
+      "The case vehicle, a 2002 Toyota Camry four-door sedan, was traveling eastbound on a two-lane rural highway. "
+      "V2, a 2000 Ford F-150 pickup, was westbound. The Camry drifted left across the centerline into the westbound "
+      "lane. The front of the Camry struck the front of V2.");
+  ASSERT_EQ(unnumbered.vehicles.size(), 2u);
+  EXPECT_EQ(unnumbered.vehicles[0].travel.value, Compass::kEast);
+  EXPECT_EQ(unnumbered.crash.type.value, CrashType::kHeadOn);
+  // Who rode along does not hide the course: "was southbound on vine street
+  // with a 17-year-old male driver and two passengers".
+  const AccidentRecord riders = kExtractor.Extract(
+      "The crash occurred where Vine Street, a north-south two-lane street with a 25 mph limit, ends at Commercial "
+      "Avenue, which has two lanes in each direction and a 35 mph limit. The case vehicle, a 2004 Mazda Tribute, "
+      "was southbound on Vine Street with a 17-year-old male driver and two passengers. It slid across Commercial "
+      "Avenue and its front struck a utility pole.");
+  ASSERT_EQ(riders.vehicles.size(), 1u);
+  EXPECT_EQ(riders.vehicles[0].travel.value, Compass::kSouth);
+  EXPECT_NEAR(riders.road.speed_limit_mps.value / 0.44704, 25.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
