@@ -136,9 +136,20 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kOrdinalVehicle, "v$1");
   // A CIREN summary that never numbers its case vehicle ("the case vehicle,
   // a 2002 toyota camry, ... v2, a 2000 ford f-150"): the case vehicle is v1.
+  // Once numbered ("v1 (case vehicle)", "the case vehicle (v1)", "v1, the
+  // case vehicle,"), "the driver of the case vehicle stated" is that one's.
+  static const regex kCaseDeclared(
+      R"(\bv([1-9])\s*(?:\(\s*|,\s*|-\s*)(?:the\s+)?case vehicle\b|\bcase vehicle\s*(?:\(\s*|,\s*)v([1-9])\b)");
+  static const regex kCaseAside(R"(\s*,\s*(?:the\s+)?case vehicle\s*,)");
+  static const regex kCaseInBrackets(R"(\s*[,-]\s*(?:the\s+)?case vehicle\s*(?=\)))");
+  static const regex kCaseVehicle(R"(\b(?:the\s+)?case vehicle\b)");
   static const regex kAnyV1(R"(\bv1\b)");
-  static const regex kCaseVehicle(R"(\b(?:the\s+)?case vehicle\b(?!'))");
-  if (!Has(s, kAnyV1)) s = std::regex_replace(s, kCaseVehicle, "v1");
+  if (smatch cm; std::regex_search(s, cm, kCaseDeclared) || !Has(s, kAnyV1)) {
+    const string who = cm.empty() ? "v1" : "v" + (cm[1].matched ? cm[1].str() : cm[2].str());
+    s = std::regex_replace(s, kCaseAside, ",");
+    s = std::regex_replace(s, kCaseInBrackets, "");
+    s = std::regex_replace(s, kCaseVehicle, who);
+  }
   // "v1 (v1 - case vehicle)" and "the ford taurus (v1)" are one reference.
   static const regex kRepeat(R"(\bv([1-9])\s*\(\s*v\1\b[^()]{0,40}\))");
   s = std::regex_replace(s, kRepeat, "v$1");
@@ -681,7 +692,11 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // turn signal was still on from moving into the right lane a block earlier").
   static const regex kEarlierMove(
       R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b)");
-  const string lanes = std::regex_replace(t, kEarlierMove, " ");
+  // Nor one only meant: "had looked over his shoulder to change lanes and
+  // did not see that traffic had stopped".
+  static const regex kMeantLaneChange(
+      R"(\b(?:look\w*|check\w*|glanc\w*|want\w*|intend\w*|plann\w*|prepar\w*|about)\b[^.;]{0,40}?\bto change lanes?\b)");
+  const string lanes = std::regex_replace(std::regex_replace(t, kEarlierMove, " "), kMeantLaneChange, " ");
   if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
   if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
@@ -1702,9 +1717,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // turn (the development set's one such case, a car stopped in the mouth of
   // a driveway waiting to turn left, is coded turning left); NMVCCS reports,
   // which quote the coded critical events, code the stop.
-  static const regex kCaseSummary(R"(\bcase (?:vehicle|occupant)\b)");
+  // (Read in the text as given: normalising names the case vehicle v1.)
+  static const regex kCaseSummary(R"(\bcase\s+(?:vehicle|occupant)\b)", std::regex::icase);
   const bool case_summary =
-      Has(norm, kCaseSummary) &&
+      std::regex_search(text.begin(), text.end(), kCaseSummary) &&
       std::none_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
@@ -2891,7 +2907,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (turner_from_side) type = CrashType::kTurnIntoPath;
       else if (perpendicular) type = CrashType::kTurnIntoPath;
       else type = CrashType::kTurnAcrossPath;
-    } else if (Has(impact_text, kBroadside)) {
+    } else if (Has(impact_text, kBroadside) && !(opposite && !crossing_paths)) {
+      // (Not between vehicles meeting on one road: one that spun across the
+      // centerline and was broadsided is coded in the opposite-direction
+      // group.)
       type = CrashType::kAngle;  // "t-boned", "broadsided": a front into a side, paths crossing
     } else if (opposite) {
       const bool fronts = sa.front && (sb.front || !sb.any());

@@ -2501,5 +2501,34 @@ TEST(NarrativeExtractorTest, CaseSummaryWordingOfVehiclesAndTheirCourses) {
   EXPECT_NEAR(riders.road.speed_limit_mps.value / 0.44704, 25.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, TheCaseVehicleOnceNumberedAndMovesOnlyMeant) {
+  // "the driver of the case vehicle stated ... then pulled out to turn
+  // left": the case vehicle is V1, and CIREN codes its turn.
+  const AccidentRecord named = kExtractor.Extract(
+      "The case vehicle (V1), a 2000 Buick LeSabre, was northbound on a two-lane county road approaching a "
+      "four-leg intersection with a state highway. Vehicle two (V2), a 2004 Chevrolet TrailBlazer, was traveling "
+      "east on the state highway. The driver of the case vehicle stated that she stopped at the stop sign, looked "
+      "both ways, and then pulled out to turn left and proceed west on the highway. The front of V2 struck the left "
+      "side of V1.");
+  ASSERT_EQ(named.vehicles.size(), 2u);
+  EXPECT_EQ(named.vehicles[0].pre_event.value, Movement::kTurnLeft);
+  // "looked over his shoulder to change lanes": no lane change made.
+  const AccidentRecord meant = kExtractor.Extract(
+      "Traffic in both eastbound lanes of the interstate had come to a stop. V2 was stopped in the right lane. V1 "
+      "(case vehicle) was traveling east in the right lane. The driver of V1 stated that he had looked over his "
+      "shoulder to change lanes and did not see that traffic had stopped. The front of V1 struck the back of V2.");
+  ASSERT_EQ(meant.vehicles.size(), 2u);
+  EXPECT_EQ(meant.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(meant.crash.type.value, CrashType::kRearEnd);
+  // One that spun across the centerline and was broadsided by an oncoming
+  // vehicle is in the opposite-direction group, not an angle crash.
+  const AccidentRecord spun = kExtractor.Extract(
+      "V1 was traveling northbound on a two-lane undivided state highway. V2 was southbound on the same road. The "
+      "rear of V1 began to slide to the left and V1 rotated clockwise as it crossed the centerline into the "
+      "southbound lane. The front of V2 struck the left side of V1 in a broadside configuration.");
+  ASSERT_EQ(spun.vehicles.size(), 2u);
+  EXPECT_EQ(spun.crash.type.value, CrashType::kSideswipeOpposite);
+}
+
 }  // namespace
 }  // namespace accsim
