@@ -730,7 +730,7 @@ void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other
   static const regex kSelfStraight(
       R"(\bthis vehicle\b[^.]{0,40}?\b(?:crossing over|passing through|going straight|over the (?:left |right )?lane line|off the edge|control loss|traveling too fast|over the line)|)"
       // "... was when she began to travel over the lane line".
-      R"(\bwhen (?:he|she|it|the (?:driver|vehicle)|v[1-9])\s+(?:began|started) to (?:travel|drift|move|cross)\s+over the (?:left |right )?(?:lane|center|centre) ?line)");
+      R"(\bwhen (?:he|she|it|the (?:driver|vehicle)|v[1-9])\s+(?:(?:began|started) to (?:travel|drift|move|cross)|travell?ed|drifted|moved|crossed)\s+over the (?:left |right )?(?:lane|center|centre) ?line)");
   static const regex kSelfBack(R"(\bthis vehicle\b[^.]{0,40}?\bbacking)");
   static const regex kSelfLane(R"(\bthis vehicle\b[^.]{0,40}?\bchanging lanes)");
   static const regex kOtherStopped(R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,40}?\bstopped\b)");
@@ -868,7 +868,8 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
 // A report that states its limits as a rule (`limits_told`: one quoting the
 // NASS coding, whose investigators always give the posted limit) and is
 // silent on this one is on an unposted town street: the statutory 30 mph
-// however many lanes (the development set's crossing/10, 17 and 19). CIREN
+// however many lanes (the development set's crossing/10, 17 and 19), also
+// where the road is counted but named by no class. CIREN
 // summaries never state a limit, so there the arterial's 45 stands.
 std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool road_described, bool limits_told) {
   static const regex kFreeway(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b|\bi-\d{1,3}\b)");
@@ -887,7 +888,10 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
   if (Has(scene, kRural)) return 55.0;
   if (Has(scene, kUrban)) return lanes_total >= 3 && !limits_told ? 45.0 : 30.0;
   if (Has(scene, kOneWayStreet)) return 30.0;
-  if (Has(scene, kHighway) || road_described) return 55.0;
+  if (Has(scene, kHighway)) return 55.0;
+  // Silence where limits are told, on a road named by no class: the town's.
+  if (limits_told && road_described) return 30.0;
+  if (road_described) return 55.0;
   return std::nullopt;
 }
 

@@ -2530,5 +2530,30 @@ TEST(NarrativeExtractorTest, TheCaseVehicleOnceNumberedAndMovesOnlyMeant) {
   EXPECT_EQ(spun.crash.type.value, CrashType::kSideswipeOpposite);
 }
 
+TEST(NarrativeExtractorTest, CodedWordingsOfALaneLineCrossingAndAnUnpostedCountedRoad) {
+  // "the critical pre-crash event for v1 was when it traveled over the lane
+  // line": driving straight before it, though it changed lanes.
+  const AccidentRecord lane = kExtractor.Extract(
+      "The southbound roadway of the interstate had three travel lanes. V1 was traveling south in lane two. V2 was "
+      "traveling south in lane one, slightly behind V1. The driver of V1 changed lanes to the right to get in "
+      "position for the exit, and the right side of V1 contacted the left side of V2. The Critical Pre-crash Event "
+      "for V1 was when it traveled over the lane line on the right side of the travel lane.");
+  ASSERT_EQ(lane.vehicles.size(), 2u);
+  EXPECT_EQ(lane.vehicles[0].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(lane.vehicles[0].pre_event.value, Movement::kStraight);
+  // A report that gives its limits as a rule and gives none here, on a road
+  // named by no class: the unposted town street's 30 mph.
+  const std::string scene =
+      "The crash occurred in the intersection of two two-way roadways, each with two lanes in each direction, "
+      "controlled by traffic signals. Vehicle # 1 was traveling eastbound in the left lane. Vehicle # 2 was "
+      "traveling eastbound in the right lane and attempted to make a left turn. The front of Vehicle # 1 impacted "
+      "the left side of Vehicle # 2.";
+  const AccidentRecord told = kExtractor.Extract(
+      scene + " The Critical Pre-crash Event for Vehicle # 2 was coded as: This vehicle traveling, turning left at "
+              "intersection.");
+  EXPECT_NEAR(told.road.speed_limit_mps.value / 0.44704, 30.0, 0.5);
+  EXPECT_NEAR(kExtractor.Extract(scene).road.speed_limit_mps.value / 0.44704, 55.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
