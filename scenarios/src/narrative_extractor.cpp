@@ -461,12 +461,13 @@ std::optional<Compass> DirectionIn(const string& s) {
       R"(\b(?:intend\w*|intention|plann\w*|wanted|to turn|turn (?:left|right) and|to (?:go|travel|head|proceed))\b[^.,;]{0,30}$)");
   // "waiting for westbound traffic to clear": the others' direction.
   static const regex kOthersTraffic(R"(^\w+[- ]?bound\s+(?:[\w-]+\s+)?(?:traffic|vehicles|cars)\b)");
+  static const regex kWaitedFor(
+      R"(\b(?:waiting|waited|wait|yield\w*|watching|looking)\s+(?:for|to|at)\s+(?:the\s+|any\s+)?(?:oncoming\s+)?$)");
   std::optional<Compass> lane_direction;
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kDir); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
     const size_t at = static_cast<size_t>(m.position());
     if (m[2].matched && Has(Before(s, at, 50) + m[0].str(), kIntended)) continue;
-    static const regex kWaitedFor(R"(\b(?:waiting|waited|wait|yield\w*|watching|looking)\s+(?:for|to|at)\s+(?:the\s+|any\s+)?(?:oncoming\s+)?$)");
     if (m[1].matched && (Has(s.substr(at, 40), kOthersTraffic) || Has(Before(s, at, 40), kWaitedFor))) continue;
     for (int g = 1; g <= 3; ++g) {
       if (!m[g].matched) continue;
@@ -903,6 +904,12 @@ const string& RoadNoun() {
   return kNoun;
 }
 
+// Any road noun, as a word.
+const regex& RoadWord() {
+  static const regex kWord(R"(\b)" + RoadNoun() + R"(\b)");
+  return kWord;
+}
+
 // The road the clause holding `pos` is about: its first named road ("the
 // side street is a 2-lane road posted at 30 mph" -> "side street").
 // `end`, when given, is where that road's words end.
@@ -1250,6 +1257,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     s.refs = RefsIn(s.text);
     for (const Ref& ref : s.refs) max_v = std::max(max_v, ref.vehicle);
   }
+  // An NMVCCS-style report quotes the coded critical events (and states
+  // every posted limit); a CIREN case summary does neither.
+  const bool quotes_coding =
+      std::any_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
 
   // ---- The impact: the first sentence with a contact verb between two vehicles.
   static const regex kContact(
@@ -1723,9 +1734,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // which quote the coded critical events, code the stop.
   // (Read in the text as given: normalising names the case vehicle v1.)
   static const regex kCaseSummary(R"(\bcase\s+(?:vehicle|occupant)\b)", std::regex::icase);
-  const bool case_summary =
-      std::regex_search(text.begin(), text.end(), kCaseSummary) &&
-      std::none_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
+  const bool case_summary = std::regex_search(text.begin(), text.end(), kCaseSummary) && !quotes_coding;
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
     if ((narrative[i + 1].parked || statement[i + 1].parked) && !LeftParking(narrative[i + 1])) {
@@ -1921,10 +1930,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // the centre lane is the other road's).
         static const regex kCentreLane(
             R"(\b(?:center|centre|continuous|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|\b2[- ]way left[- ]turn lane\b)");
-        static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
         string phrase_after = s.text.substr(pos + static_cast<size_t>(m.length(0)));
         smatch rw;
-        if (std::regex_search(phrase_after, rw, kRoadWord)) {
+        if (std::regex_search(phrase_after, rw, RoadWord())) {
           const size_t at = static_cast<size_t>(rw.position());
           const string noun = rw[1].str();
           phrase_after = phrase_after.substr(0, at);
@@ -2312,9 +2320,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // township road: the phrase names another road than V1's named one
       // (unless in apposition to it: "route 9, a divided highway").
       if (!v1_named_road.empty()) {
-        static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
         const size_t name_at = cleaned.find(v1_named_road);
-        if (name_at != string::npos && Has(phrase, kRoadWord)) {
+        if (name_at != string::npos && Has(phrase, RoadWord())) {
           const size_t name_end = name_at + v1_named_road.size();
           const bool in_phrase = name_at >= from && name_at < from + phrase.size();
           static const regex kApposition(R"(^\s*,\s*$)");
@@ -2325,11 +2332,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // "a four-lane divided boulevard and a two-lane undivided city
       // street", V1 on the boulevard: the word is the other road's.
       if (distinctive && phrase.find(v1_road) == string::npos) {
-        static const regex kRoadWord(R"(\b)" + RoadNoun() + R"(\b)");
         const size_t v1_at = cleaned.find(v1_road);
         const bool before_and = v1_at != string::npos && v1_at < from && cleaned.compare(from, 4, "and ") == 0;
         const bool after_and = v1_at != string::npos && v1_at >= from + phrase.size() && next != string::npos;
-        if ((before_and || after_and) && Has(phrase, kRoadWord)) return false;
+        if ((before_and || after_and) && Has(phrase, RoadWord())) return false;
       }
       std::optional<int> axis = AxisIn(phrase);
       if (!axis) axis = AxisIn(s.text);
@@ -2597,10 +2603,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         break;
       }
     }
-    const bool limits_told =
-        std::any_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
-    auto mph = TypicalLimitMph(v1_text, r.road.lanes_total.value, false, limits_told);
-    if (!mph) mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known(), limits_told);
+    auto mph = TypicalLimitMph(v1_text, r.road.lanes_total.value, false, quotes_coding);
+    if (!mph) mph = TypicalLimitMph(scene, r.road.lanes_total.value, r.road.lanes_total.known(), quotes_coding);
     if (mph) {
       r.road.speed_limit_mps.Set(*mph * kMphToMps, Provenance::kInferred);
       r.road.speed_limit_unit.Set("mph", Provenance::kInferred);

@@ -13,6 +13,17 @@ namespace {
 
 const NarrativeExtractor kExtractor;
 
+// The speed limit read, in mph.
+double LimitMph(const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; }
+
+// The pre-event movement of vehicle `i` in a report naming `vehicles`
+// vehicles (kUnknown, and a failure, if the count is not that).
+Movement PreEventOf(const std::string& text, size_t vehicles, size_t i) {
+  const AccidentRecord r = kExtractor.Extract(text);
+  EXPECT_EQ(r.vehicles.size(), vehicles) << text;
+  return i < r.vehicles.size() ? r.vehicles[i].pre_event.value : Movement::kUnknown;
+}
+
 TEST(NarrativeExtractorTest, RearEndWithMphAndVehicleWords) {
   const auto r = kExtractor.Extract(
       "The crash happened on a two-lane, two-way road with a posted speed limit of 35 mph. Vehicle one, a 2004 "
@@ -2130,27 +2141,23 @@ TEST(NarrativeExtractorTest, LaneCountsAtTheApproach) {
 }
 
 TEST(NarrativeExtractorTest, EachLimitBelongsToTheRoadItsClauseNames) {
-  auto limit_mph = [](const std::string& scene) {
-    const auto r = kExtractor.Extract(scene);
-    return r.road.speed_limit_mps.value / 0.44704;
-  };
   // The road named after the value.
-  EXPECT_NEAR(limit_mph("V1, a 2000 GMC Yukon, was westbound on a two-lane, two-way asphalt roadway, approaching a "
-                        "T-intersection with a road from the north. The posted speed limit was 72 kmph (45 mph) on the "
-                        "through road and 48 kmph (30 mph) on the side road. V2, a 1996 Ford Escort, was southbound on "
-                        "the side road and turned left. The front of V1 struck the left side of V2."),
+  EXPECT_NEAR(LimitMph("V1, a 2000 GMC Yukon, was westbound on a two-lane, two-way asphalt roadway, approaching a "
+                       "T-intersection with a road from the north. The posted speed limit was 72 kmph (45 mph) on the "
+                       "through road and 48 kmph (30 mph) on the side road. V2, a 1996 Ford Escort, was southbound on "
+                       "the side road and turned left. The front of V1 struck the left side of V2."),
               44.7, 0.5);
   // A second road with its own verb starts its own clause.
-  EXPECT_NEAR(limit_mph("The crash happened where a two-lane side road ends at a four-lane highway. The highway had a "
-                        "posted speed limit of 50 mph and the side road had a posted speed limit of 25 mph. V1, a 1993 "
-                        "Chevrolet Astro, was southbound on the side road and stopped at the stop sign before turning "
-                        "right. V2, a 2004 Honda Odyssey, was westbound on the highway. The front of V2 struck the left "
-                        "side of V1."),
+  EXPECT_NEAR(LimitMph("The crash happened where a two-lane side road ends at a four-lane highway. The highway had a "
+                       "posted speed limit of 50 mph and the side road had a posted speed limit of 25 mph. V1, a 1993 "
+                       "Chevrolet Astro, was southbound on the side road and stopped at the stop sign before turning "
+                       "right. V2, a 2004 Honda Odyssey, was westbound on the highway. The front of V2 struck the left "
+                       "side of V1."),
               25.0, 0.5);
   // No limit stated; street parking on both sides is a town's street.
-  EXPECT_NEAR(limit_mph("The crash occurred on a two-way roadway with one lane in each direction and parking lanes on "
-                        "both sides. V1, a 2003 Honda CR-V, was northbound. V2, a 2000 box truck, was southbound and "
-                        "crossed the center line. The left side of V2 struck the left side of V1."),
+  EXPECT_NEAR(LimitMph("The crash occurred on a two-way roadway with one lane in each direction and parking lanes on "
+                       "both sides. V1, a 2003 Honda CR-V, was northbound. V2, a 2000 box truck, was southbound and "
+                       "crossed the center line. The left side of V2 struck the left side of V1."),
               30.0, 0.5);
 }
 
@@ -2226,18 +2233,17 @@ TEST(NarrativeExtractorTest, LanesSeparatedFromTheOtherDirectionByAMedian) {
 }
 
 TEST(NarrativeExtractorTest, ALimitAfterItsRoadAndARoadAfterCommas) {
-  auto limit_mph = [](const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
   // "and on the side road 48 KMPH": the road just before the value.
-  EXPECT_NEAR(limit_mph("The crash occurred at a T-intersection of a four lane roadway and a two lane side road. The "
-                        "posted speed limit on the four lane roadway was 72 KMPH (45 MPH) and on the side road 48 KMPH "
-                        "(30 MPH). Vehicle #1 was traveling west on the side road and turned left. Vehicle #2 was "
-                        "traveling north on the four lane roadway. The front of Vehicle #2 struck Vehicle #1."),
+  EXPECT_NEAR(LimitMph("The crash occurred at a T-intersection of a four lane roadway and a two lane side road. The "
+                       "posted speed limit on the four lane roadway was 72 KMPH (45 MPH) and on the side road 48 KMPH "
+                       "(30 MPH). Vehicle #1 was traveling west on the side road and turned left. Vehicle #2 was "
+                       "traveling north on the four lane roadway. The front of Vehicle #2 struck Vehicle #1."),
               30.0, 0.5);
   // "on a two-lane, two-way residential street": V1's road through commas.
-  EXPECT_NEAR(limit_mph("V1, a 2001 Ford Focus, was stopped at a stop sign facing north on a two-lane, two-way "
-                        "residential street at a T-intersection with an east/west five-lane roadway. The posted speed "
-                        "limit was 64 kmph (40 mph) on the five-lane roadway and 40 kmph (25 mph) on the residential "
-                        "street. V2 was traveling east. V1 pulled out and the front of V2 struck the left side of V1."),
+  EXPECT_NEAR(LimitMph("V1, a 2001 Ford Focus, was stopped at a stop sign facing north on a two-lane, two-way "
+                       "residential street at a T-intersection with an east/west five-lane roadway. The posted speed "
+                       "limit was 64 kmph (40 mph) on the five-lane roadway and 40 kmph (25 mph) on the residential "
+                       "street. V2 was traveling east. V1 pulled out and the front of V2 struck the left side of V1."),
               25.0, 0.5);
 }
 
@@ -2313,35 +2319,33 @@ TEST(NarrativeExtractorTest, ATurnerPassedFromTheNextLaneIsCodedGoingStraight) {
 }
 
 TEST(NarrativeExtractorTest, AnUnstatedLimitInTownIsTheStatutoryOneWhereReportsStateTheirLimits) {
-  auto limit_mph = [](const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
   const std::string scene =
       "The crash occurred at a signalized intersection in a downtown area. The east/west street was a one-way "
       "westbound roadway with three travel lanes. V1 was westbound in the middle lane. V2 was westbound in the right "
       "lane. V1 began a right turn from the middle lane and the front of V2 struck the right side of V1.";
   // A report quoting the NASS coding gives its posted limits: silence is
   // the unposted town street's 30 mph, however many lanes.
-  EXPECT_NEAR(limit_mph(scene + " The Critical Precrash Event for V1 was this vehicle traveling, turning right at "
+  EXPECT_NEAR(LimitMph(scene + " The Critical Precrash Event for V1 was this vehicle traveling, turning right at "
                                 "intersection."),
               30.0, 0.5);
   // A summary that never states limits keeps the arterial's prior.
-  EXPECT_NEAR(limit_mph(scene), 45.0, 0.5);
+  EXPECT_NEAR(LimitMph(scene), 45.0, 0.5);
 }
 
 TEST(NarrativeExtractorTest, ALocalStreetAndARoadPostedByName) {
-  auto limit_mph = [](const std::string& text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
   // "the local street" is V1's road, told apart from the arterial.
-  EXPECT_NEAR(limit_mph("The crash occurred at a T-intersection where a two-lane local street ends at an east/west "
-                        "arterial. The arterial had three lanes and a posted speed limit of 72 km/h (45 mph). The local "
-                        "street was posted at 48 km/h (30 mph) and controlled by a stop sign. V1 was northbound on the "
-                        "local street and stopped at the stop sign. V2 was westbound on the arterial. V1 turned left "
-                        "and the front of V2 struck the left side of V1."),
+  EXPECT_NEAR(LimitMph("The crash occurred at a T-intersection where a two-lane local street ends at an east/west "
+                       "arterial. The arterial had three lanes and a posted speed limit of 72 km/h (45 mph). The local "
+                       "street was posted at 48 km/h (30 mph) and controlled by a stop sign. V1 was northbound on the "
+                       "local street and stopped at the stop sign. V2 was westbound on the arterial. V1 turned left "
+                       "and the front of V2 struck the left side of V1."),
               30.0, 0.5);
   // "meets a four-lane undivided arterial posted at 64 km/h": the
   // arterial's, not the first road of the sentence.
-  EXPECT_NEAR(limit_mph("The crash occurred where a two-lane side street from the south meets an east/west four-lane "
-                        "undivided arterial posted at 64 km/h (40 mph). The side street was posted at 48 km/h (30 mph). "
-                        "V1 was northbound on the side street and turned right. V2 was eastbound on the arterial. The "
-                        "front of V2 struck the rear of V1."),
+  EXPECT_NEAR(LimitMph("The crash occurred where a two-lane side street from the south meets an east/west four-lane "
+                       "undivided arterial posted at 64 km/h (40 mph). The side street was posted at 48 km/h (30 mph). "
+                       "V1 was northbound on the side street and turned right. V2 was eastbound on the arterial. The "
+                       "front of V2 struck the rear of V1."),
               30.0, 0.5);
 }
 
@@ -2357,64 +2361,58 @@ TEST(NarrativeExtractorTest, TheTrafficADriverWatchedIsNotANewSubject) {
 
 TEST(NarrativeExtractorTest, AStopThatEndedInMovingOffOrACodedDecelerationIsGoingStraight) {
   // "had been stopped ... and was moving into the intersection": moving off.
-  const AccidentRecord off = kExtractor.Extract(
-      "The crash occurred at a signalized intersection of two two-lane roads. V1 was traveling west. V2 had been "
-      "stopped in the northbound lane for a red signal and was moving into the intersection after the signal turned "
-      "green. The front of V1 struck the right side of V2.");
-  ASSERT_EQ(off.vehicles.size(), 2u);
-  EXPECT_EQ(off.vehicles[1].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(PreEventOf("The crash occurred at a signalized intersection of two two-lane roads. V1 was traveling "
+                       "west. V2 had been stopped in the northbound lane for a red signal and was moving into the "
+                       "intersection after the signal turned green. The front of V1 struck the right side of V2.",
+                       2, 1),
+            Movement::kStraight);
   // The follower's coded event says the lead was still decelerating when
   // struck, whatever the driver says of her stop.
   const std::string lead =
       "The crash occurred on a two-lane road approaching a signal. V2 was traveling east when the signal turned "
       "yellow, and the driver of V2 braked to stop for the signal. V1 was traveling east behind V2. The front of V1 "
       "struck the back of V2. The driver of V2 stated that she stopped for the light.";
-  const AccidentRecord coded = kExtractor.Extract(
-      lead + " The Critical Precrash Event for V1 was other motor vehicle in lane, traveling in same direction while "
-             "decelerating.");
-  ASSERT_EQ(coded.vehicles.size(), 2u);
-  EXPECT_EQ(coded.vehicles[1].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(PreEventOf(lead + " The Critical Precrash Event for V1 was other motor vehicle in lane, traveling in "
+                              "same direction while decelerating.",
+                       2, 1),
+            Movement::kStraight);
   // Coded as stopped, it stays stopped.
-  const AccidentRecord stopped = kExtractor.Extract(
-      lead + " The Critical Precrash Event for V1 was other motor vehicle in lane, other vehicle stopped.");
-  ASSERT_EQ(stopped.vehicles.size(), 2u);
-  EXPECT_EQ(stopped.vehicles[1].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(PreEventOf(lead + " The Critical Precrash Event for V1 was other motor vehicle in lane, other vehicle "
+                              "stopped.",
+                       2, 1),
+            Movement::kStopped);
 }
 
 TEST(NarrativeExtractorTest, WhatWasLongPastOrSomeoneElsesIsNotThePreCrashMovement) {
-  auto pre = [](const std::string& text, size_t i) {
-    const AccidentRecord r = kExtractor.Extract(text);
-    EXPECT_GT(r.vehicles.size(), i) << text;
-    return r.vehicles.size() > i ? r.vehicles[i].pre_event.value : Movement::kStraight;
-  };
   // "to go around the stopped vehicle": the stopped one is another.
   const std::string around =
       "The crash occurred mid-block on a four-lane city street with two lanes in each direction. V1 was traveling "
       "east in lane two. A vehicle ahead of V1 in lane two had stopped to turn left into an alley. V1 moved to the "
       "right to go around the stopped vehicle, and the right front of V1 struck the left side of V2, which was "
       "traveling east in lane one.";
-  EXPECT_NE(pre(around, 0), Movement::kStopped);
+  EXPECT_NE(PreEventOf(around, 2, 0), Movement::kStopped);
   // ... and the alley it was turning into does not put the crash there.
   EXPECT_EQ(kExtractor.Extract(around).crash.location.value, CrashLocation::kSegment);
   // A lane change a block earlier.
-  EXPECT_EQ(pre("The crash occurred at a T-intersection of a four-lane road and a residential street. V1 stopped at "
-                "the stop sign on the street and pulled out to turn right. V2 was traveling east in lane one with its "
-                "right turn signal on. The front of V2 struck the left side of V1. The driver of V2 stated that he "
-                "was going straight and that his signal was still on from moving into the right lane a block "
-                "earlier.",
-                1),
+  EXPECT_EQ(PreEventOf("The crash occurred at a T-intersection of a four-lane road and a residential street. V1 "
+                       "stopped at the stop sign on the street and pulled out to turn right. V2 was traveling east in "
+                       "lane one with its right turn signal on. The front of V2 struck the left side of V1. The driver "
+                       "of V2 stated that he was going straight and that his signal was still on from moving into the "
+                       "right lane a block earlier.",
+                       2, 1),
             Movement::kStraight);
   // A speed kept down for the ice.
-  EXPECT_EQ(pre("The crash occurred on a two-lane rural road. V1 was westbound in a curve when it lost traction on the "
-                "ice and slid into the eastbound lane. V2 was eastbound. The front of V2 struck the right side of V1. "
-                "The driver of V2 said he had slowed for the ice and was traveling about 35 mph.",
-                1),
+  EXPECT_EQ(PreEventOf("The crash occurred on a two-lane rural road. V1 was westbound in a curve when it lost traction "
+                       "on the ice and slid into the eastbound lane. V2 was eastbound. The front of V2 struck the "
+                       "right side of V1. The driver of V2 said he had slowed for the ice and was traveling about 35 "
+                       "mph.",
+                       2, 1),
             Movement::kStraight);
   // "slowed down and began to weave within its lane": no slowing to turn.
-  EXPECT_EQ(pre("The crash occurred on a two-lane undivided highway. V1 was traveling west. Witnesses stated that "
-                "it slowed down and began to weave within its lane. V1 then drifted left across the center line. V2 "
-                "was traveling east. The front of V1 struck the front of V2.",
-                0),
+  EXPECT_EQ(PreEventOf("The crash occurred on a two-lane undivided highway. V1 was traveling west. Witnesses stated "
+                       "that it slowed down and began to weave within its lane. V1 then drifted left across the center "
+                       "line. V2 was traveling east. The front of V1 struck the front of V2.",
+                       2, 0),
             Movement::kStraight);
   // "moved to the right to prepare for a right turn at the next block" is
   // a lane change, not the turn.
@@ -2460,10 +2458,10 @@ TEST(NarrativeExtractorTest, ADriftOutOfTheLaneIsGoingStraightBeforeIt) {
   EXPECT_EQ(drift.vehicles[0].movement.value, Movement::kChangingLanes);  // the path the planner drives
   EXPECT_EQ(drift.vehicles[0].pre_event.value, Movement::kStraight);
   // A lane change the driver made stays one.
-  const AccidentRecord meant = kExtractor.Extract(
-      scene + "The driver of V1 signaled and moved into the left lane. The front of V2 struck the left side of V1.");
-  ASSERT_EQ(meant.vehicles.size(), 2u);
-  EXPECT_EQ(meant.vehicles[0].pre_event.value, Movement::kChangingLanes);
+  EXPECT_EQ(PreEventOf(scene + "The driver of V1 signaled and moved into the left lane. The front of V2 struck "
+                               "the left side of V1.",
+                       2, 0),
+            Movement::kChangingLanes);
 }
 
 TEST(NarrativeExtractorTest, CaseSummaryWordingOfVehiclesAndTheirCourses) {
@@ -2504,14 +2502,13 @@ TEST(NarrativeExtractorTest, CaseSummaryWordingOfVehiclesAndTheirCourses) {
 TEST(NarrativeExtractorTest, TheCaseVehicleOnceNumberedAndMovesOnlyMeant) {
   // "the driver of the case vehicle stated ... then pulled out to turn
   // left": the case vehicle is V1, and CIREN codes its turn.
-  const AccidentRecord named = kExtractor.Extract(
-      "The case vehicle (V1), a 2000 Buick LeSabre, was northbound on a two-lane county road approaching a "
-      "four-leg intersection with a state highway. Vehicle two (V2), a 2004 Chevrolet TrailBlazer, was traveling "
-      "east on the state highway. The driver of the case vehicle stated that she stopped at the stop sign, looked "
-      "both ways, and then pulled out to turn left and proceed west on the highway. The front of V2 struck the left "
-      "side of V1.");
-  ASSERT_EQ(named.vehicles.size(), 2u);
-  EXPECT_EQ(named.vehicles[0].pre_event.value, Movement::kTurnLeft);
+  EXPECT_EQ(PreEventOf("The case vehicle (V1), a 2000 Buick LeSabre, was northbound on a two-lane county road "
+                       "approaching a four-leg intersection with a state highway. Vehicle two (V2), a 2004 Chevrolet "
+                       "TrailBlazer, was traveling east on the state highway. The driver of the case vehicle stated "
+                       "that she stopped at the stop sign, looked both ways, and then pulled out to turn left and "
+                       "proceed west on the highway. The front of V2 struck the left side of V1.",
+                       2, 0),
+            Movement::kTurnLeft);
   // "looked over his shoulder to change lanes": no lane change made.
   const AccidentRecord meant = kExtractor.Extract(
       "Traffic in both eastbound lanes of the interstate had come to a stop. V2 was stopped in the right lane. V1 "
@@ -2552,7 +2549,7 @@ TEST(NarrativeExtractorTest, CodedWordingsOfALaneLineCrossingAndAnUnpostedCounte
       scene + " The Critical Pre-crash Event for Vehicle # 2 was coded as: This vehicle traveling, turning left at "
               "intersection.");
   EXPECT_NEAR(told.road.speed_limit_mps.value / 0.44704, 30.0, 0.5);
-  EXPECT_NEAR(kExtractor.Extract(scene).road.speed_limit_mps.value / 0.44704, 55.0, 0.5);
+  EXPECT_NEAR(LimitMph(scene), 55.0, 0.5);
 }
 
 }  // namespace
