@@ -209,6 +209,13 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
   }
   if (c.type == CrashType::kRearEnd && c.struck_area == ImpactArea::kUnknown) c.struck_area = ImpactArea::kRear;
   if ((c.type == CrashType::kHeadOn) && c.struck_area == ImpactArea::kUnknown) c.struck_area = ImpactArea::kFront;
+  // A vehicle stopped crosswise on the road away from any junction (spun
+  // out, stalled) and struck in the side: it stands across the striker's
+  // lane on a straight road, instead of pulling out of a side road.
+  c.across_lane = !c.obstacle && c.type == CrashType::kAngle && vb.movement.value == Manoeuvre::kStopped &&
+                  va.movement.value != Manoeuvre::kStopped && d.location.known() &&
+                  d.location.value == CrashLocation::kSegment && d.road.type.value == RoadType::kStraight;
+  if (c.across_lane) note(vb.id + ": stopped off any junction; stands across " + va.id + "'s lane");
   c.approach_angle = c.type == CrashType::kRearEnd || c.type == CrashType::kSideswipeSame ? 0.0
                      : c.type == CrashType::kHeadOn || c.type == CrashType::kSideswipeOpposite ||
                              c.type == CrashType::kTurnAcrossPath
@@ -247,7 +254,7 @@ ImpactConfiguration ResolveImpact(const CrashDescription& in, uint64_t seed, con
     if (m == Manoeuvre::kSlowing) s0 = std::max(s, std::min(s + 5.0, std::max(limit, s)));
     // "Stopped" in a junction crash is coded for the wait at the stop line;
     // the vehicle then pulls into the junction from rest.
-    if ((i == a || i == b) && junction && s < 0.5) {
+    if ((i == a || (i == b && !c.across_lane)) && junction && s < 0.5) {
       s = config.pull_away_speed;
       s0 = 0.0;
       note(v.id + ": stopped before a junction crash; pulls away from rest to " + Fmt("%.1f m/s", s));
@@ -505,7 +512,8 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
   // road whatever the type (the drive it leaves is not a mapped leg).
   const bool backs_in = A.movement.value == Manoeuvre::kBacking && c.striker_area != ImpactArea::kUnknown &&
                         AreaIncludes(c.striker_area, ImpactArea::kRear) && !c.obstacle;
-  const bool junction = JunctionType(type) && !backs_in;
+  const bool across = c.across_lane && type == CrashType::kAngle;
+  const bool junction = JunctionType(type) && !backs_in && !across;
   spec.divided = d.road.divided.value && (type == CrashType::kRearEnd || type == CrashType::kSideswipeSame);
   if (junction) {
     spec.type = d.road.type.value == RoadType::kIntersection ? RoadType::kIntersection : RoadType::kTJunction;
@@ -558,7 +566,19 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
   // (the kerb lane for a right side, the lane by the centre line for a left
   // side, reached across the westbound lanes). The backer is planned in
   // reverse: its path runs rear first.
-  if (backs_in) {
+  if (across) {
+    // Eastbound in its lane into the side of a vehicle standing crosswise
+    // ahead: facing north when its left side is struck (it faces west),
+    // south for its right.
+    if (variant != 0) throw std::invalid_argument("plan: one geometry for a vehicle across the lane");
+    const int lane = A.lane.value ? std::min(*A.lane.value, kerb) : 0;
+    const double y = LaneY(map, Compass::kEast, lane), x = 60.0, reach = 20.0;
+    const double dir = HasRight(c.struck_area) ? -1.0 : 1.0;
+    pa = road_lane(Compass::kEast, lane);
+    pb = VehiclePath{Polyline({Vec2(x, y - dir * reach), Vec2(x, y + dir * reach)}), reach,
+                     std::string("standing across the lane, facing ") + (dir > 0 ? "north" : "south"), false, true};
+    pa.impact_s = pa.path.Project(Vec2(x - HalfWidth(cb) - HalfLength(ca), y)).s;
+  } else if (backs_in) {
     if (variant != 0) throw std::invalid_argument("plan: one backing geometry only");
     const bool left = HasLeft(c.struck_area);
     const int lane = left ? 0 : kerb;

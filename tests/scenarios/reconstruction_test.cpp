@@ -334,5 +334,32 @@ TEST(ReconstructionTest, AStrikerBackingOutOfADriveMeetsTheSideWithItsBack) {
   EXPECT_TRUE(p.check.success) << p.check.reason;
 }
 
+TEST(ReconstructionTest, AVehicleStoppedAcrossTheLaneOffAJunctionIsStruckWhereItStands) {
+  // Spun out and stalled crosswise on a straight road, hit in the side.
+  for (const ImpactArea side : {ImpactArea::kLeft, ImpactArea::kRight}) {
+    auto d = Two(CrashType::kAngle, RoadType::kStraight, ImpactArea::kFront, side, Manoeuvre::kStraight,
+                 Manoeuvre::kStopped);
+    d.location.Set(CrashLocation::kSegment, Provenance::kStated);
+    const Reconstruction r = Reconstruct(d);
+    ASSERT_TRUE(r.check.success) << ToString(side) << ": " << r.check.reason;
+    EXPECT_EQ(r.plan.scenario.map.type, RoadType::kStraight);
+    // It stands still, crosswise to the striker, the whole run.
+    const Trajectory& t = r.plan.trajectories[1];
+    for (const double time : {0.0, r.plan.state.time}) {
+      const TrajectoryPoint p = t.Sample(time);
+      EXPECT_EQ(p.v, 0.0);
+      EXPECT_NEAR(std::abs(std::remainder(p.yaw - r.plan.trajectories[0].Sample(time).yaw, 2 * kPi)), kPi / 2, 1e-6);
+    }
+    EXPECT_EQ(t.Sample(0.0).x, t.Sample(r.plan.state.time).x);
+  }
+  // At a junction, stopped is the wait at the stop line: it pulls away.
+  auto j = Two(CrashType::kAngle, RoadType::kIntersection, ImpactArea::kFront, ImpactArea::kLeft,
+               Manoeuvre::kStraight, Manoeuvre::kStopped);
+  j.location.Set(CrashLocation::kJunction, Provenance::kStated);
+  const Reconstruction rj = Reconstruct(j);
+  ASSERT_TRUE(rj.check.success) << rj.check.reason;
+  EXPECT_GT(rj.plan.trajectories[1].Sample(rj.plan.state.time).v, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim

@@ -54,6 +54,7 @@ struct ImpactConfiguration {
   int striker = 0, struck = 1;   // vehicle indices of the physical roles: the striker's front hits
   bool roles_swapped = false;    // the description names the other vehicle as the striker
   bool obstacle = false;         // single-vehicle crash: the struck object is the last body (id kObjectId)
+  bool across_lane = false;      // angle crash off any junction: the struck vehicle stands across the striker's lane
   ImpactArea striker_area = ImpactArea::kFront, struck_area = ImpactArea::kUnknown;  // physical roles' areas
   double approach_angle = 0.0;   // [rad] struck heading minus striker heading at impact (0 rear-end, pi head-on)
   std::vector<double> start_speed;   // [m/s] per vehicle, at t = 0
