@@ -132,7 +132,9 @@ string Normalise(std::string_view in) {
   static const regex kShortRef(R"(\b[ud]([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kShortRef, "v$1");
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
-  static const regex kOrdinalVehicle(R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b)");
+  // Not a place in a queue: "the 3rd vehicle in a queue waiting for the light".
+  static const regex kOrdinalVehicle(
+      R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b(?!\s+(?:in\s+(?:a\s+|the\s+)?(?:queue|line)|from\s+the\s+(?:front|light|signal|stop)|stopped|waiting)\b))");
   s = std::regex_replace(s, kOrdinalVehicle, "v$1");
   // A CIREN summary that never numbers its case vehicle ("the case vehicle,
   // a 2002 toyota camry, ... v2, a 2000 ford f-150"): the case vehicle is v1.
@@ -159,6 +161,29 @@ string Normalise(std::string_view in) {
   // A name with its model year is the vehicle's description, kept in the
   // usual form: "the 2002 dodge caravan (v1) was southbound" reads as "v1, a
   // 2002 dodge caravan, was southbound".
+  // "the striking vehicle, a 2002 chevrolet tahoe (v2), and the turning
+  // vehicle, ...": the role names the vehicle wherever it recurs.
+  {
+    static const regex kRoleNamed(
+        R"(\bthe\s+(striking|struck|turning|other|lead|leading|following|crossing|oncoming|stopped|merging|passing|backing)\s+vehicle\s*,\s*(?:an?\s+)?([^,;()]{3,50}?)\s*\(\s*v([1-9])\s*\))");
+    std::map<string, string> roles;
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kRoleNamed); it != std::sregex_iterator(); ++it) {
+      const string role = (*it)[1].str(), v = "v" + (*it)[3].str();
+      if (roles.count(role) && roles[role] != v) roles[role].clear();  // two vehicles share it: no alias
+      else roles[role] = v;
+    }
+    // ... and is told as a description: "v2, a 2002 chevrolet tahoe".
+    s = ReplaceWith(s, kRoleNamed, [](const smatch& m) { return "v" + m[3].str() + ", a " + m[2].str(); });
+    for (const auto& [role, v] : roles) {
+      if (v.empty()) continue;
+      s = std::regex_replace(s, regex(R"(\bthe\s+)" + role + R"(\s+vehicle\b(?!\s*,\s*an?\s))"), v);
+    }
+  }
+  // "the mitsubishi (v1), a 2000 eclipse coupe," names the make first:
+  // "v1, a 2000 mitsubishi eclipse coupe,".
+  static const regex kMakeThenModel(
+      R"(\bthe\s+([a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s*\(\s*v([1-9])\s*\)\s*,\s*an?\s+((?:19|20)\d\d)\s+)");
+  s = std::regex_replace(s, kMakeThenModel, "v$2, a $3 $1 ");
   static const regex kNamed(
       R"(\bthe\s+((?:(?:19|20)\d\d\s+)?[a-z](?:(?!\.\s|\bthe\s)[a-z0-9/&'. -]){1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
   s = ReplaceWith(s, kNamed, [](const std::smatch& m) {
@@ -428,7 +453,11 @@ string WithoutDistantJunctions(const string& s) {
       // "having entered by way of an exit ramp approximately 5 km to the east".
       R"(|\b(?:ramp|interchange)\s+(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:km|kilometers?|kilometres?|mi|miles?|m|meters?|metres?|ft|feet)\b[^.;]{0,25}|)"
       R"(\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50})");
-  return std::regex_replace(s, kDistant, " ");
+  // A queue stopped for the light there is at it (intersection related):
+  // "stopped for a red signal at the next intersection, 30 meters ahead".
+  static const regex kQueuedForIt(
+      R"(\b((?:stopped|waiting|queued|backed up|stopping)\s+(?:\w+\s+){0,3}?for\s+(?:a|the)\s+(?:red\s+)?(?:traffic\s+)?(?:light|signal)\s+at\s+the\s+)next\s+)");
+  return std::regex_replace(std::regex_replace(s, kQueuedForIt, "$1"), kDistant, " ");
 }
 
 string EscapeRegex(const string& s) {
@@ -609,7 +638,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\bstop(?:ped|s)?\b[^.]{0,90}?\b(?:and|then|before)\s+(?:then\s+)?(?:(?:was|had)\s+(?:just\s+)?)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross|moving)\w*)");
   static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
   static const regex kRolledStop(
-      R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed (?:down )?but (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
+      R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed\b[^.;]{0,60}?\bbut (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
   static const regex kNoStop(
       R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
@@ -655,7 +684,11 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // Nor is "to go around the stopped vehicle": a stopped thing it passed.
   static const regex kStoppedObject(
       R"(\b(?:the|a|an|another|other|several)\s+(?:[\w-]+\s+)?stopped\s+(?:[\w-]+\s+)?(?:vehicles?|cars?|trucks?|vans?|minivans?|suvs?|pickups?|sedans?|bus|buses|traffic)\b)");
-  const string stops = std::regex_replace(std::regex_replace(t, kAlmostStopped, " "), kStoppedObject, " ");
+  // Nor is the queue's stop: "did not recognize that the queue had stopped".
+  static const regex kQueueStopped(
+      R"(\b(?:the|that)\s+(?:queue|traffic|line of (?:traffic|vehicles|cars))\s+(?:ahead\s+)?(?:had|was|were)\s+(?:already\s+|just\s+)?(?:stopped|come to a stop|at a stop)\b)");
+  const string stops = std::regex_replace(
+      std::regex_replace(std::regex_replace(t, kAlmostStopped, " "), kStoppedObject, " "), kQueueStopped, " ");
   // "moved forward ... and then stopped again": the last word is the stop.
   static const regex kStoppedAgain(R"(\b(?:stopped|came to a stop|halted)\s+again\b)");
   if (Has(stops, kStoppedAgain)) e.stopped_again = true;
@@ -667,7 +700,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
     }
   }
   static const regex kEntered(
-      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b|)"
+      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
       R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b)");
   // A lane's name is not a manoeuvre: "in the two-way left turn lane".
   static const regex kTurnLane(
@@ -677,6 +710,12 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // "slowing with its right turn signal on to turn into the driveway".
   static const regex kTurnMeant(R"(\bto (?:make a |begin a )?turn\b|\bturn signal\b)");
   if (Has(t, kTurnMeant)) e.turn_meant = true;
+  // "slowed with its left turn signal on": the signal tells the intent.
+  static const regex kOwnSignal(
+      R"(\b(?:with|had|activated|turned on|put on|using)\s+(?:its|his|her|their)\s+(left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b|\bsignal(?:ed|led|ing)\s+(?:for\s+)?a\s+(left|right)\s+turn\b)");
+  if (smatch sm; std::regex_search(t, sm, kOwnSignal)) {
+    ((sm[1].matched ? sm[1].str() : sm[2].str()) == "left" ? e.intent_left : e.intent_right) = true;
+  }
   if (!intention) {
     if (Has(turns, kLeft)) e.turn_left = true;
     if (Has(turns, kRight)) e.turn_right = true;
@@ -697,7 +736,13 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // did not see that traffic had stopped".
   static const regex kMeantLaneChange(
       R"(\b(?:look\w*|check\w*|glanc\w*|want\w*|intend\w*|plann\w*|prepar\w*|about)\b[^.;]{0,40}?\bto change lanes?\b)");
-  const string lanes = std::regex_replace(std::regex_replace(t, kEarlierMove, " "), kMeantLaneChange, " ");
+  // Nor the swerve that tried to avoid the crash ("steered left into the
+  // inside lane, but the front of v1 struck ..."): that follows the
+  // critical event.
+  static const regex kEvasive(
+      R"(\b(?:steered|swerved|veered|steering|swerving)\b[^.;]{0,60}?(?:,\s*but\b|\bto avoid\b|\bin an (?:attempt|effort) to avoid\b))");
+  const string lanes = std::regex_replace(
+      std::regex_replace(std::regex_replace(t, kEarlierMove, " "), kMeantLaneChange, " "), kEvasive, " ");
   if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
   if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
@@ -769,7 +814,11 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     return MovementDecision{path, Movement::kMerging, Provenance::kStated};
   }
   if (e.parked || n.parked) return both(Movement::kStopped, Provenance::kStated);
-  if (e.back || n.coded_back) return both(Movement::kBacking, Provenance::kStated);
+  // A back out of a stall before a coded turn out of the lot is not the
+  // pre-crash movement: the turn is.
+  if ((e.back && !n.coded_turn_left && !n.coded_turn_right) || n.coded_back) {
+    return both(Movement::kBacking, Provenance::kStated);
+  }
   if (e.leaving_parking) return both(Movement::kMerging, Provenance::kStated);
   // A vehicle the narrative leaves stopped or waiting to turn, whose driver
   // says it then turned, turned.
@@ -1221,6 +1270,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (const auto& w : words) all += (all.empty() ? "" : " ") + w;
       owners[all].insert(v);
       owners[words.front()].insert(v);
+      // A make glued to its model number: "the mazda" for "a 2004 mazda3".
+      static const regex kGluedModel(R"(^([a-z]{3,})\d{1,2}$)");
+      smatch glued;
+      if (std::regex_match(words.front(), glued, kGluedModel)) owners[glued[1].str()].insert(v);
       if (words.size() > 1) {
         string model;
         for (size_t k = 1; k < words.size(); ++k) model += (model.empty() ? "" : " ") + words[k];
@@ -1230,6 +1283,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       static const std::array<const char*, 7> kClassWord = {"car", "suv", "pickup", "van", "truck", "bus", "motorcycle"};
       owners[kClassWord[static_cast<size_t>(ClassOf(d + " " + (bodies.count(v) ? bodies[v] : "")))]].insert(v);
+    }
+    // "v2, a 2001 international 9200 tractor pulling a loaded van
+    // semitrailer": "the semitrailer", "the trailer" are v2's.
+    static const regex kTowing(
+        R"(\bv([1-9]),\s+an?\s+[^,;]{0,60}?\b(?:pulling|towing|hauling)\s+(?:an?\s+)?(?:[\w-]+\s+){0,3}?(semi-?trailer|trailer|camper|boat)\b)");
+    for (const Sentence& s : sentences) {
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTowing); it != std::sregex_iterator(); ++it) {
+        const int v = std::stoi((*it)[1].str());
+        owners[(*it)[2].str()].insert(v);
+        if ((*it)[2].str() != "trailer") owners["trailer"].insert(v);
+      }
     }
     std::vector<std::pair<string, int>> aliases;
     for (const auto& [alias, vs] : owners) {
@@ -1241,7 +1305,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (const auto& [alias, v] : aliases) alt += (alt.empty() ? "" : "|") + EscapeRegex(alias);
       // "the stopped jetta", "the oncoming ford": a state word may come first.
       const regex alias_re(
-          R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|first|second)\s+)?()" +
+          R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|slow-moving|slowing|disabled|stalled|first|second)\s+)?()" +
           alt + R"()\b(?!\s+driver))");
       std::map<string, int> lookup(aliases.begin(), aliases.end());
       for (Sentence& s : sentences) {
@@ -1280,7 +1344,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // tells it comes next.
       static const regex kAvoided(
           R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b)");
-      if (!Has(std::regex_replace(s.text, kAvoided, " "), kContact)) continue;
+      // Nor is a role's name ("v2, the striking vehicle") a contact.
+      static const regex kRoleName(R"(\b(?:striking|struck)\s+(?:vehicle|car|unit|driver)s?\b)");
+      if (!Has(std::regex_replace(std::regex_replace(s.text, kAvoided, " "), kRoleName, " "), kContact)) continue;
       const size_t distinct = DistinctVehicles(s.refs);
       if ((pass == 0 && distinct >= 2) || (pass >= 1 && distinct > 0)) {
         impact = i;
@@ -1314,9 +1380,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     if (std::regex_search(s.text, vm, kContact)) {
       const size_t verb_end = static_cast<size_t>(vm.position() + vm.length());
       const bool object_named = std::any_of(s.refs.begin(), s.refs.end(), [&](const Ref& ref) { return ref.pos > verb_end; });
-      const Sentence& next = sentences[impact + 1];
-      if (!object_named && next.kind == Kind::kNarrative && DistinctVehicles(next.refs) >= 2 && Has(next.text, kContact)) {
-        ++impact;
+      // (Or later, when the report opens with the collision and then tells
+      // the approach: "the striking vehicle ... and the turning vehicle ...
+      // collided at the intersection of ... . v1 was westbound ...".)
+      for (size_t k = impact + 1; !object_named && k < sentences.size() && k <= impact + 12; ++k) {
+        const Sentence& next = sentences[k];
+        if (next.kind == Kind::kCoding) break;
+        if (next.kind == Kind::kNarrative && DistinctVehicles(next.refs) >= 2 && Has(next.text, kContact)) {
+          impact = k;
+          break;
+        }
       }
     }
   }
@@ -1325,13 +1398,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kVehicleNoun(
       R"(\b(?:car|van|vehicle|truck|pickup|pick-up|suv|motorcycle|bus|sedan|minivan|jeep|trailer|tractor-trailer)\b)");
   static const regex kObjectNoun(
-      R"(\b(?:tree|pole|curb|fence|barrier|wall|guardrail|guard rail|ditch|sign|embankment|pedestrian|median|building|mailbox|post|rock|bridge|culvert|deer|animal|cyclist|bicycle)\b)");
+      R"(\b(?:tree|sapling|stump|shrubs?|bush(?:es)?|hedge\w*|pole|curb|fence|barrier|wall|guardrail|guard rail|ditch|sign|embankment|pedestrian|median|building|mailbox|post|rock|boulder|bridge|culvert|deer|animal|cyclist|bicycle)\b)");
   bool unnumbered_other = false, unnumbered_parked = false;
   if (impact < sentences.size()) {
     const string& s = sentences[impact].text;
     smatch vm;
     if (std::regex_search(s, vm, kContact)) {
-      const string after = vm.suffix().str().substr(0, 80);
+      // What it struck, up to the next clause ("..., then the vehicle rolled").
+      static const regex kNextClause(R"(,\s*(?:then|and then|and|before|after|which|where)\b|;)");
+      string after = vm.suffix().str().substr(0, 80);
+      if (smatch cm; std::regex_search(after, cm, kNextClause)) after = after.substr(0, static_cast<size_t>(cm.position()));
       static const regex kVehicleLike(R"(\bparked\b|\bunoccupied\b|\b(?:19|20)\d\d\s+[a-z])");
       if (DistinctVehicles(sentences[impact].refs) == 1 && (Has(after, kVehicleNoun) || Has(after, kVehicleLike)) &&
           !Has(after.substr(0, 30), kObjectNoun) &&
@@ -1760,9 +1836,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kTJunction(
       R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
   static const regex kIntersection(
-      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway)|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
+      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway)|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
   static const regex kDriveway(
-      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b|\bpetrol station\b|\bcar park\b|\bentrance (?:of|to) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot)\b)");
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
   static const regex kRamp(R"(\b(?:on|off|entrance|exit)?[- ]?ramp\b)");
   static const regex kCurve(R"(\bcurv(?:e|ed|ing)\b)");
   if (Has(scene, kTJunction)) r.road.kind.Set(RoadKind::kTJunction, Provenance::kStated);
@@ -1843,7 +1919,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   {
     // "2 through lanes plus a left-turn bay in each direction": 3 each way.
     static const regex kPerDir(
-        R"(\b(\d)[- ](?:through\s+|travel\s+|moving\s+)?lanes?\s+(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
+        R"(\b(\d)[- ](?:through\s+|travel\s+|moving\s+)?lanes?\s+(?:of\s+(?:traffic|travel)\s+)?(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
     // "each direction of route 30 has 2 through lanes plus a left-turn bay",
     // "a grass median and, in each direction, 2 through lanes and a left-turn lane".
     static const regex kEachHas(
@@ -1851,7 +1927,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kDirectional(
         R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|travel\s+|through\s+)?lanes?\b|(?=\s*(?:[,;.)]|and\b|$)))|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
     static const regex kTotal(
-        R"(\b(\d)[- ](?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
+        R"(\b(\d)[- ](?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:of\s+(?:traffic|travel)\s+)?(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
     static const regex kOneWayHere(R"(\boneway\b)");
     // Roads named with their axis ("a north/south rural highway and an
     // east/west county road") give it to later sentences about them ("the
@@ -1984,7 +2060,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // ("2 through lanes and a left-turn bay").
         static const regex kDirectionSubject(
             R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
-        static const regex kBayAfter(R"(^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
+        static const regex kBayAfter(
+            R"(^\s+(?:through\s+|travel\s+)?lanes?\s*,?\s+(?:and|plus)\s+(?:a|an|1)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bay|lane)\b|^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
         const int n = std::stoi((*it)[1].str());
         smatch dm;
         const string near_before = before.substr(before.size() > 120 ? before.size() - 120 : 0);
@@ -2216,6 +2293,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (size_t k = best->sentence > 0 ? best->sentence - 1 : 0; k <= best->sentence && v1_way == 0 && !one_way && !each_way; ++k) {
         const string& t = sentences[k].text;
         if (Has(t, kOneWaySentence) && !Has(t, kOtherRoadPhrase) && !Has(scene, kTwoWay)) one_way = true;
+        // "a southbound one-way avenue and a two-way street. the avenue had
+        // 3 travel lanes": the counted road is the one called one-way.
+        if (!best->road.empty() && !GenericRoad(best->road) &&
+            Has(t, regex(R"(\boneway\s+(?:[\w/-]+\s+){0,2}?)" + EscapeRegex(best->road) + R"(\b)"))) {
+          one_way = true;
+        }
       }
       if (!one_way && v1_way == 0 && !each_way && Has(sentences[best->sentence].text, kOneWaySentence) &&
           !Has(sentences[best->sentence].text, kOtherRoadPhrase)) {
@@ -2270,7 +2353,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     // "divided by two solid yellow lines" is paint, not a divided road; a
     // freeway counts when the crash is on it, not "a nearby interstate".
     static const regex kDivided(
-        R"(\bdual carriageway\b|\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
+        R"(\bdual carriageway\b|\bdivided\b(?!\s+by\s+(?:\w+\s+){0,3}?(?:lines?|stripes?|centerlines?|paint\w*|markings?)\b)|\bmedian\b|\bbarrier wall\b|\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b|)"
+        // "separated from the northbound lanes by a concrete barrier".
+        R"(\bseparated\s+(?:from\s+[^.;,]{0,40}?\s+)?by\s+(?:a|an)\s+(?:[\w-]+\s+){0,3}?(?:barrier|guardrail|guard rail|wall)\b)");
     static const regex kUndivided(
         R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b|\b(?:no|without (?:a|any)) (?:\w+ )?median\b)");
     // At a junction, a divided road running across V1's course is the other
@@ -2355,7 +2440,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // In a sentence about a vehicle, a median is where it went ("stopped
       // again in the median"); the road is divided only when said so.
       static const regex kSaysDivided(
-          R"(\bdivided\b|\bdual carriageway\b|\bwith an? (?:[\w-]+ ){0,3}median\b|\bseparated (?:from [^.;,]{0,40}? )?by an? (?:[\w-]+ ){0,3}median\b|\bmedian[- ]divided\b|\bmedian (?:wall|barrier|guardrail|guard rail|cable)\b|\b(?:center|centre|concrete|raised) median\b)");
+          R"(\bdivided\b|\bdual carriageway\b|\bwith an? (?:[\w-]+ ){0,3}median\b|\bseparated (?:from [^.;,]{0,40}? )?by an? (?:[\w-]+ ){0,3}median\b|\bmedian[- ]divided\b|\bmedian (?:wall|barrier|guardrail|guard rail|cable)\b|\b(?:center|centre|concrete|raised) median\b|)"
+          R"(\bseparated\s+(?:from\s+[^.;,]{0,40}?\s+)?by\s+(?:a|an)\s+(?:[\w-]+\s+){0,3}?(?:barrier|guardrail|guard rail|wall)\b|)"
+          R"(\b(?:on|along|of|in)\s+(?:a|an|the)\s+(?:[\w-]+[ ,]+){0,4}?(?:interstate|freeway)\b)");
       if (!s.refs.empty() && !Has(s.text, kSaysDivided)) continue;
       divided = true;
     }
@@ -2481,9 +2568,13 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           skip_until = pos + static_cast<size_t>(it->length(0)) + static_cast<size_t>(conv.length(0));
         }
         if (Has(before.substr(before.size() > 40 ? before.size() - 40 : 0), kAdvisory)) continue;
+        // A limit word after the value qualifies it close by ("45 mph (72
+        // kmh) posted speed limit"), not one a clause later ("her speed at
+        // 72-80 kmh and said she thought the limit was 55 mph").
+        const string near_tail = tail.substr(0, 30);
         if (before.find("limit") == string::npos && before.find("posted") == string::npos &&
-            before.find("speed zone") == string::npos && tail.find("limit") == string::npos &&
-            tail.find("posted") == string::npos && tail.rfind(" zone", 0) != 0 &&
+            before.find("speed zone") == string::npos && near_tail.find("limit") == string::npos &&
+            near_tail.find("posted") == string::npos && tail.rfind(" zone", 0) != 0 &&
             tail.rfind(" speed zone", 0) != 0) {  // "a 45 mph zone", "a 25 mph speed zone"
           continue;
         }
@@ -2927,7 +3018,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else if (perpendicular) {
       type = CrashType::kAngle;
     } else if (same) {
-      type = (sb.left || sb.right || sa.left || sa.right) ? CrashType::kSideswipeSame : CrashType::kRearEnd;
+      // A front into the back corner of a vehicle stopped in the lane is a
+      // rear-end ("struck the left rear of v2", stalled ahead).
+      const bool into_stopped_corner = sb.rear && sa.front && !sa.left && !sa.right &&
+                                       b->movement.value == Movement::kStopped;
+      type = (sb.left || sb.right || sa.left || sa.right) && !into_stopped_corner ? CrashType::kSideswipeSame
+                                                                                   : CrashType::kRearEnd;
     } else if (b->movement.value == Movement::kStopped || b->movement.value == Movement::kSlowing || sb.rear) {
       type = CrashType::kRearEnd;
     } else if (sa.front && sb.front) {
@@ -3071,7 +3167,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kAtIntersectionStrong(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bintersection of\b)");
     static const regex kAtIntersection(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bintersecting\s+(?:[\w-]+\s+){0,3}?(?:road|street|roadway|highway|avenue)\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
@@ -3085,7 +3181,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         R"(\b(?:a|an|another)\s+(?:[\w-]+\s+){0,2}?(?:vehicle|car|truck|van|pickup|suv)\b[^.;]{0,80}?\b(?:into|out of|from)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:driveway|alley|parking lot)\b)");
     // A crash on a ramp leading to an intersection is on the ramp.
     static const regex kOnTheRamp(R"(\b(?:on|onto|along|of|in)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
-    static const regex kMidblock(R"(\bmid-?block\b|\bnon-?junction\b|\bnot (?:at|in|near) (?:an|the) (?:intersection|junction)\b)");
+    // Nor a drive people got off at: "a school bus stopped to let two
+    // children off at their driveway".
+    static const regex kPeoplesDrive(
+        R"(\b(?:children|kids|students|pupils|passengers?|child|riders?)\s+(?:\w+\s+){0,3}?(?:at|to|near)\s+(?:their|his|her|a|the)\s+(?:\w+\s+)?driveways?\b|)"
+        // Nor one it drove past: "had passed the entrance to a shopping plaza".
+        R"(\b(?:passed|missed|past|overshot)\s+(?:the|a|an)\s+(?:entrance|driveway|drive)\b[^.;,]{0,40})");
+    static const regex kMidblock(
+        R"(\bmid-?block\b|\bnon-?junction\b|\bnot (?:at|in|near) (?:an|the) (?:intersection|junction)\b|)"
+        // "at a location with no median opening or intersection".
+        R"(\blocation with no\s+(?:(?!at\b|in\b|near\b)[\w-]+\s+){0,3}?(?:or\s+)?(?:intersection|junction)\b)");
     if (from_driveway) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
     } else if (Has(pre, kMidblock) && !Has(std::regex_replace(pre, kOthersDrive, " "), kDrivewayWord)) {
@@ -3093,7 +3198,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersectionStrong) ||
                RanTrafficControl(pre) || (Has(pre, kAtIntersection) && !Has(pre, kOnTheRamp))) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
-    } else if (Has(pre, kDriveway)) {
+    } else if (Has(std::regex_replace(pre, kPeoplesDrive, " "), kDriveway)) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
     } else if (Has(pre, kOnTheRamp)) {
       r.crash.location.Set(CrashLocation::kRamp, Provenance::kInferred);

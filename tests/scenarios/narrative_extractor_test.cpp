@@ -2552,5 +2552,165 @@ TEST(NarrativeExtractorTest, CodedWordingsOfALaneLineCrossingAndAnUnpostedCounte
   EXPECT_NEAR(LimitMph(scene), 55.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, VehiclesNamedByMakeRoleOrLoadAreFollowed) {
+  // A make glued to its model number ("mazda3") still names "the mazda".
+  EXPECT_EQ(PreEventOf("The Mazda (V2), a 2004 Mazda3 sedan, was traveling in the left lane and was slowing with the "
+                       "traffic. The Jeep (V1), a 2001 Jeep Grand Cherokee, was following the Mazda. The front of "
+                       "the Jeep struck the rear of the Mazda. The driver of the Mazda, a 50-year-old female, said "
+                       "she was slowing down because the traffic ahead had nearly stopped.",
+                       2, 0),
+            Movement::kStraight);
+  // The make before the number, the model after it.
+  const AccidentRecord made = kExtractor.Extract(
+      "The Toyota (V2), a 2005 Prius, was traveling north in the curb lane and braked for the yellow signal. The "
+      "Mitsubishi (V1), a 2000 Eclipse coupe, was following in the same lane. The front of the Mitsubishi struck "
+      "the rear of the Toyota. The Mitsubishi stopped just behind it.");
+  ASSERT_EQ(made.vehicles.size(), 2u);
+  EXPECT_EQ(made.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(made.crash.striking_area.value, DamageArea::kFront);
+  // Roles named once ("the striking vehicle, a ... (v2)") and a report that
+  // opens with the collision: the impact is where the roles are told.
+  const AccidentRecord roles = kExtractor.Extract(
+      "The striking vehicle, a 2002 Chevrolet Tahoe (V2), and the turning vehicle, a 2004 Kia Spectra (V1), "
+      "collided at the signalized intersection of Harbor Boulevard and Seaview Drive. V1 was westbound and was "
+      "the first vehicle stopped at the red signal, intending to turn left. V2 was eastbound and entered the "
+      "intersection on the green. The front of V2 struck the right side of V1. The driver of the turning vehicle "
+      "said he had been stopped for about a minute.");
+  ASSERT_EQ(roles.vehicles.size(), 2u);
+  EXPECT_EQ(roles.crash.striking.value, "V2");
+  EXPECT_EQ(roles.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(roles.vehicles[1].travel.value, Compass::kEast);
+  // A tractor's trailer is the tractor; "the slow-moving truck" is a vehicle named.
+  const AccidentRecord towing = kExtractor.Extract(
+      "V1, a 2002 Buick LeSabre, was westbound on an interstate highway. V2, a 2001 International 9200 tractor "
+      "pulling a loaded van semitrailer, was ahead of V1 in the same lane, traveling slowly. The driver of V1 did "
+      "not recognize the slow-moving truck, and the front of V1 struck and underrode the rear of the semitrailer.");
+  EXPECT_EQ(towing.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(towing.crash.struck_area.value, DamageArea::kRear);
+}
+
+TEST(NarrativeExtractorTest, QueuesRollingStopsAndLanesEnteredAreNotTheSubjectsMoves) {
+  // A stop sign rolled through after slowing: decelerating.
+  EXPECT_EQ(PreEventOf("V1 was northbound and stopped at the all-way stop sign. V2 was westbound. The driver of V2 "
+                       "slowed, coasting up to the stop line, but did not stop before continuing straight into the "
+                       "intersection. The front of V2 struck the right side of V1.",
+                       2, 1),
+            Movement::kSlowing);
+  // "the third vehicle in a queue" is a place in line, and the queue's stop
+  // is not the follower's.
+  const std::string queue =
+      "V2 was stopped in the center lane, the third vehicle in a queue waiting for the red signal. V1 was "
+      "approaching in the same lane. The driver of V1 did not recognize that the queue had stopped until he was "
+      "close to it, and the front of V1 struck the back of V2.";
+  EXPECT_EQ(kExtractor.Extract(queue).participant_count.value, 2);
+  EXPECT_EQ(PreEventOf(queue, 2, 0), Movement::kStraight);
+  EXPECT_EQ(PreEventOf(queue, 2, 1), Movement::kStopped);
+  // Moving into a turn lane is no turn begun: it struck the car ahead.
+  EXPECT_EQ(PreEventOf("V2 was southbound in the center lane and had stopped waiting to turn left. V1 was also "
+                       "southbound; its driver had entered the center lane about 60 meters back, also intending to "
+                       "turn left, and was coasting toward the intersection. The front of V1 struck the rear of V2.",
+                       2, 0),
+            Movement::kStraight);
+  // ... but entering the road's lane from a drive is.
+  EXPECT_EQ(PreEventOf("V1 was stopped in the mouth of the driveway, waiting to turn left onto the roadway. V2 was "
+                       "eastbound. As V1 entered the eastbound lane, the front of V2 struck the left side of V1.",
+                       2, 0),
+            Movement::kStopped);
+  // A swerve away from the crash is no lane change.
+  EXPECT_EQ(PreEventOf("V1 was southbound in the curb lane. V2 pulled out of a gas station driveway across the "
+                       "southbound lanes in front of V1. The driver of V1 steered left into the inside lane, but the "
+                       "front of V1 struck the left side of V2.",
+                       2, 0),
+            Movement::kStraight);
+  // A back out of a stall before the coded turn out of the lot.
+  const AccidentRecord lot = kExtractor.Extract(
+      "V2 was westbound on Center Street. The driver of V1 backed out of a parking stall, drove through the lot to "
+      "the exit and turned left to go east. The front of V2 struck V1's left side. The Critical Precrash Event for "
+      "V1 was this vehicle traveling, turning left at intersection.");
+  ASSERT_EQ(lot.vehicles.size(), 2u);
+  EXPECT_NE(lot.vehicles[0].pre_event.value, Movement::kBacking);
+  EXPECT_EQ(lot.vehicles[0].movement.value, Movement::kTurnLeft);
+}
+
+TEST(NarrativeExtractorTest, WherePlacesAndRoadsAreToldInPassing) {
+  auto location = [](const std::string& text) { return kExtractor.Extract(text).crash.location.value; };
+  const std::string rear =
+      " V2 was stopped at the end of the queue. V1 was traveling in the same lane behind V2. The front of V1 struck "
+      "the back of V2.";
+  // A queue for the light at the next intersection, 30 meters on, is at it.
+  EXPECT_EQ(location("Traffic in the left lane was stopped for a red signal at the next intersection, approximately "
+                     "30 meters ahead." + rear),
+            CrashLocation::kJunction);
+  EXPECT_EQ(location("V1 began a lane change to the right to prepare for a right turn at the next intersection, and "
+                     "the right side of V1 struck the left side of V2."),
+            CrashLocation::kSegment);
+  // A plaza's or a yard's entrance is an access; a drive children got off
+  // at, or one driven past, is not.
+  EXPECT_EQ(location("V1 had moved into the two-way left turn lane, intending to turn left into the entrance of a "
+                     "shopping plaza. V2 was eastbound. The front of V2 struck the right side of V1."),
+            CrashLocation::kDriveway);
+  EXPECT_EQ(location("A school bus had stopped to let two children off at their driveway. V2 had come to a stop "
+                     "behind the bus." + rear),
+            CrashLocation::kSegment);
+  EXPECT_EQ(location("V1 had passed the entrance to a shopping plaza and began a U-turn at a location with no "
+                     "median opening or intersection. The front of V2 struck the left side of V1."),
+            CrashLocation::kSegment);
+  // "where a road crosses US-29", "the intersecting street".
+  EXPECT_EQ(location("The crash took place where Carter's Mill Road crosses US-29. V2 pulled out to cross the "
+                     "northbound lanes. The front of V1 struck the right side of V2."),
+            CrashLocation::kJunction);
+  EXPECT_EQ(location("V1 was southbound on the highway. V2 was stopped at the stop sign of the intersecting two-lane "
+                     "residential street. V2 pulled away and the front of V1 struck the right side of V2."),
+            CrashLocation::kJunction);
+  // Lanes: a barrier between the directions divides the road; "lanes of
+  // traffic in each direction"; a turn lane after the through lanes; the
+  // one-way avenue counted in the next sentence.
+  const AccidentRecord barrier = kExtractor.Extract(
+      "V1 was southbound in lane two of an urban highway with three southbound lanes, separated from the northbound "
+      "lanes by a concrete barrier. V2 was southbound in lane one. The right side of V1 struck the left side of V2.");
+  EXPECT_TRUE(barrier.road.divided.value);
+  EXPECT_EQ(barrier.road.lanes_per_direction.value, 3);
+  const AccidentRecord avenue = kExtractor.Extract(
+      "The crash took place on a north/south avenue carrying two lanes of traffic in each direction with no "
+      "median. V1 was northbound. V2 was northbound. The left front of V1 struck the right side of V2.");
+  EXPECT_EQ(avenue.road.lanes_total.value, 4);
+  const AccidentRecord bay = kExtractor.Extract(
+      "Route 202 is a divided highway with a grass median; at the intersection the southbound side consists of two "
+      "through lanes and a long left-turn lane. V2 was stopped in the left-turn lane. V1 was southbound behind V2. "
+      "The front of V1 struck the back of V2.");
+  EXPECT_EQ(bay.road.lanes_per_direction.value, 3);
+  const AccidentRecord one_way = kExtractor.Extract(
+      "The crash occurred at the intersection of a southbound one-way avenue and a two-way east/west street. The "
+      "avenue had three travel lanes with parking along both curbs. V1 was southbound in the middle lane of the "
+      "avenue and turned right. V2 was southbound in the right lane. The front of V2 struck the right side of V1.");
+  EXPECT_TRUE(one_way.road.one_way.value);
+  EXPECT_EQ(one_way.road.lanes_total.value, 3);
+}
+
+TEST(NarrativeExtractorTest, WhatWasStruckAndTheLimitAreReadCloseBy) {
+  // A sapling struck, then "the vehicle rolled": one vehicle.
+  const AccidentRecord tree = kExtractor.Extract(
+      "Vehicle 1, a 2005 Jeep Liberty, was southbound. The Jeep drifted off the right edge of the pavement. The "
+      "front of the Jeep struck a small sapling (about 8 cm in diameter), then the vehicle rolled over down the "
+      "embankment. She estimated her speed at 72-80 kmph (45-50 mph) and said she thought the limit on the road "
+      "was 55 mph.");
+  EXPECT_EQ(tree.participant_count.value, 1);
+  EXPECT_EQ(tree.crash.type.value, CrashType::kSingleVehicle);
+  EXPECT_NEAR(tree.road.speed_limit_mps.value / 0.44704, 55.0, 0.5);  // not her 80 km/h
+  // A front into the back corner of a car stalled in the lane: a rear-end.
+  const AccidentRecord stalled = kExtractor.Extract(
+      "V1 was northbound on a two-lane rural road. V2 had run out of fuel and was stopped in the northbound lane "
+      "with its hazard lamps flashing. The front of V1 struck the left rear of V2.");
+  EXPECT_EQ(stalled.crash.type.value, CrashType::kRearEnd);
+  // A turn signal tells the turn: the pass around it crosses a turner's path.
+  const AccidentRecord signal = kExtractor.Extract(
+      "V2 was westbound and slowed with its left turn signal on to turn into a residential driveway. V1 was "
+      "westbound behind V2. V1's driver, who said he did not see the turn signal, steered left across the double "
+      "yellow to go around the slowing pickup just as V2 began its turn. The front of V1 struck the left side of "
+      "V2. The Critical Precrash Event for V1 was this vehicle traveling over the lane line on the left side of the "
+      "travel lane.");
+  EXPECT_EQ(signal.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 }  // namespace
 }  // namespace accsim
