@@ -739,10 +739,15 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // Nor the swerve that tried to avoid the crash ("steered left into the
   // inside lane, but the front of v1 struck ..."): that follows the
   // critical event.
+  // Nor one it could not make: "he could not change lanes because of traffic".
+  static const regex kNoLaneChange(
+      R"(\b(?:could not|couldn't|unable to|did not|didn't|not able to|never|without)\s+(?:\w+\s+)?chang\w*\s+lanes?\b)");
   static const regex kEvasive(
       R"(\b(?:steered|swerved|veered|steering|swerving)\b[^.;]{0,60}?(?:,\s*but\b|\bto avoid\b|\bin an (?:attempt|effort) to avoid\b))");
   const string lanes = std::regex_replace(
-      std::regex_replace(std::regex_replace(t, kEarlierMove, " "), kMeantLaneChange, " "), kEvasive, " ");
+      std::regex_replace(std::regex_replace(std::regex_replace(t, kEarlierMove, " "), kMeantLaneChange, " "),
+                         kEvasive, " "),
+      kNoLaneChange, " ");
   if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
   if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
@@ -925,7 +930,9 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
   static const regex kFreeway(R"(\b(?:freeway|interstate|expressway|turnpike|limited[- ]access)\b|\bi-\d{1,3}\b)");
   static const regex kPrivate(
       R"(\b(?:on|in|within|along|of|through) (?:a|an|the) (?:\w+ )?(?:parking (?:lot|area|garage)|private (?:road|drive))\b)");
-  static const regex kResidential(R"(\bresidential\b|\bsubdivision\b|\bneighborhood street\b)");
+  // (A "private residential driveway" is no residential street.)
+  static const regex kResidential(
+      R"(\bresidential\b(?!\s+(?:driveway|drive|property|lot|yard|home|house|garage|parking))|\bsubdivision\b|\bneighborhood street\b)");
   static const regex kRural(R"(\brural\b|\b(?:state|u\.?s\.?|county) (?:highway|route|road)\b)");
   // Street parking and sidewalks are a town's: "parking lanes on both sides".
   static const regex kUrban(
@@ -1557,6 +1564,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kWatchedTraffic(
           R"(\b(watching|watched|checking|checked|looking at|looked at)\s+(?:the\s+)?(?:traffic|cars|vehicles)(?:\s+[\w']+){0,4}\s*,)");
       t = std::regex_replace(t, kWatchedTraffic, "$1,");
+      // Nor the traffic it looked out for ("looked to her right for
+      // westbound traffic and then pulled out").
+      static const regex kLookedForTraffic(
+          R"(\b((?:look|check|watch)\w*)\s+(?:(?:to|at)\s+(?:his|her|the|its|their)\s+(?:left|right)\s+)?for\s+(?:[\w-]+bound\s+|oncoming\s+|approaching\s+|cross\s+|other\s+)?(?:traffic|cars|vehicles)\b(?:\s+(?:on|from|along|in)\s+(?:the\s+)?[\w-]+)?)");
+      t = std::regex_replace(t, kLookedForTraffic, "$1");
       // What it tows is its own ("a 2004 mack tractor pulling a flatbed
       // semi-trailer was traveling south").
       static const regex kTowing(R"(\b(?:pulling|towing|hauling)\s+$)");
@@ -1567,7 +1579,12 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // "did not see any traffic", "saw no other vehicles": nobody there.
         static const regex kNobody(R"(\b(?:any|no)\s+$)");
         if (Has(Before(t, at, 6), kNobody)) continue;
-        t = t.substr(0, at);
+        // Its direction goes with it: "southbound traffic in the curb lane".
+        static const regex kBoundBefore(R"(\b(?:north|south|east|west)bound\s+$)");
+        smatch bm;
+        const string before = Before(t, at, 16);
+        const size_t cut_at = std::regex_search(before, bm, kBoundBefore) ? at - static_cast<size_t>(bm.length(0)) : at;
+        t = t.substr(0, cut_at);
         break;
       }
       return t;
@@ -1838,7 +1855,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kIntersection(
       R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway)|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
   static const regex kDriveway(
-      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
   static const regex kRamp(R"(\b(?:on|off|entrance|exit)?[- ]?ramp\b)");
   static const regex kCurve(R"(\bcurv(?:e|ed|ing)\b)");
   if (Has(scene, kTJunction)) r.road.kind.Set(RoadKind::kTJunction, Provenance::kStated);

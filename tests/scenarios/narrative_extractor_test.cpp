@@ -2712,5 +2712,38 @@ TEST(NarrativeExtractorTest, WhatWasStruckAndTheLimitAreReadCloseBy) {
   EXPECT_EQ(signal.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, TrafficLookedForOrWavingIsNotTheSubject) {
+  // "looked to her right for westbound traffic and then pulled out to turn
+  // left": her turn, not the traffic's (a CIREN summary codes the turn).
+  const AccidentRecord looked = kExtractor.Extract(
+      "V1, a 2002 Saturn SL (case vehicle), was stopped at a stop sign at the end of a northbound township road "
+      "where it forms a T-intersection with a state highway. V2 was eastbound on the highway. The Saturn's driver "
+      "reported that she looked to her right for westbound traffic and then pulled out to turn left toward the "
+      "west. The front of V2 struck the left side of V1.");
+  ASSERT_EQ(looked.vehicles.size(), 2u);
+  EXPECT_EQ(looked.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(looked.crash.type.value, CrashType::kTurnIntoPath);
+  // The direction of the traffic that waved it out is not its own.
+  const AccidentRecord waved = kExtractor.Extract(
+      "Vehicle #2 was exiting a gasoline station on the west side of the road, intending to turn left to travel "
+      "north. Southbound traffic in the curb lane was stopped, and a driver in that lane waved Vehicle #2 out. "
+      "Vehicle #1 was traveling south in lane two. Vehicle #2 pulled out between the stopped vehicles and began "
+      "its left turn, and the front of Vehicle #1 impacted the left side of Vehicle #2.");
+  ASSERT_EQ(waved.vehicles.size(), 2u);
+  EXPECT_EQ(waved.vehicles[1].pre_event.value, Movement::kTurnLeft);
+  EXPECT_EQ(waved.crash.location.value, CrashLocation::kDriveway);  // a gasoline station's drive
+  // A lane change he could not make is none.
+  EXPECT_EQ(PreEventOf("V1 stopped at the stop sign and then began a right turn. V2 was northbound in lane one. The "
+                       "front of V2 contacted the left rear of V1. The driver of V2 stated that he braked hard, but "
+                       "he could not change lanes because of traffic.",
+                       2, 1),
+            Movement::kStraight);
+  // A private residential driveway is no residential street: the rural
+  // highway's 55 mph.
+  EXPECT_NEAR(LimitMph("V1 was leaving a private residential driveway on the east side of a two-lane rural highway, "
+                       "intending to turn left. V2 was northbound. The front of V2 struck the left side of V1."),
+              55.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
