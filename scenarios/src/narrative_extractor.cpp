@@ -744,10 +744,10 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\b(?:could not|couldn't|unable to|did not|didn't|not able to|never|without)\s+(?:\w+\s+)?chang\w*\s+lanes?\b)");
   static const regex kEvasive(
       R"(\b(?:steered|swerved|veered|steering|swerving)\b[^.;]{0,60}?(?:,\s*but\b|\bto avoid\b|\bin an (?:attempt|effort) to avoid\b))");
-  const string lanes = std::regex_replace(
-      std::regex_replace(std::regex_replace(std::regex_replace(t, kEarlierMove, " "), kMeantLaneChange, " "),
-                         kEvasive, " "),
-      kNoLaneChange, " ");
+  string lanes = t;
+  for (const regex* not_made : {&kEarlierMove, &kMeantLaneChange, &kEvasive, &kNoLaneChange}) {
+    lanes = std::regex_replace(lanes, *not_made, " ");
+  }
   if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
   if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
@@ -964,6 +964,15 @@ const string& RoadNoun() {
 const regex& RoadWord() {
   static const regex kWord(R"(\b)" + RoadNoun() + R"(\b)");
   return kWord;
+}
+
+// A junction told by the roads that make it: "where carter's mill road
+// crosses us-29", "the intersecting residential street", "where the ramp
+// meets ...".
+const string& WhereRoadsMeet() {
+  static const string kPattern =
+      R"(\bintersecting\s+(?:[\w-]+\s+){0,3}?(?:road|street|roadway|highway|avenue)\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)";
+  return kPattern;
 }
 
 // The road the clause holding `pos` is about: its first named road ("the
@@ -1293,10 +1302,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     }
     // "v2, a 2001 international 9200 tractor pulling a loaded van
     // semitrailer": "the semitrailer", "the trailer" are v2's.
-    static const regex kTowing(
+    static const regex kTowedLoad(
         R"(\bv([1-9]),\s+an?\s+[^,;]{0,60}?\b(?:pulling|towing|hauling)\s+(?:an?\s+)?(?:[\w-]+\s+){0,3}?(semi-?trailer|trailer|camper|boat)\b)");
     for (const Sentence& s : sentences) {
-      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTowing); it != std::sregex_iterator(); ++it) {
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTowedLoad); it != std::sregex_iterator(); ++it) {
         const int v = std::stoi((*it)[1].str());
         owners[(*it)[2].str()].insert(v);
         if ((*it)[2].str() != "trailer") owners["trailer"].insert(v);
@@ -1853,7 +1862,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   static const regex kTJunction(
       R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
   static const regex kIntersection(
-      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|\bintersecting (?:road|street|roadway)|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
+      R"(\bintersection\b|(?:^|[^a-z-])junction\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|)" +
+      WhereRoadsMeet());
   static const regex kDriveway(
       R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
   static const regex kRamp(R"(\b(?:on|off|entrance|exit)?[- ]?ramp\b)");
@@ -3184,7 +3194,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kAtIntersectionStrong(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bintersection of\b)");
     static const regex kAtIntersection(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|\bintersecting\s+(?:[\w-]+\s+){0,3}?(?:road|street|roadway|highway|avenue)\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)");
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)" + WhereRoadsMeet());
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").

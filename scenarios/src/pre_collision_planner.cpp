@@ -19,6 +19,7 @@ constexpr double kStraightLength = 600.0;  // [m] straight map, x in [-300, 300]
 constexpr double kArmLength = 220.0;       // [m] junction arms
 constexpr double kFaceTolerance = 0.35;    // [m] a contact this close to a face touches it
 constexpr double kFollowGap = 30.0;        // [m] vehicles outside the impact follow the striker this far back
+constexpr double kObjectX = 60.0;          // [m] where a stationary object or vehicle across the lane stands
 constexpr double kQueueGap = 1.5;          // [m] between stopped vehicles queued ahead of a rear-end's struck vehicle
 
 std::string Fmt(const char* f, double a) {
@@ -463,7 +464,6 @@ std::pair<VehiclePath, VehiclePath> ObstaclePaths(const RoadMap& map, ObstaclePl
   const double y = place == ObstaclePlace::kInLane         ? y0
                    : place == ObstaclePlace::kRightRoadside ? y0 - w / 2 - 1.0 - hw
                                                             : LaneY(map, Compass::kWest, lanes - 1) + w / 2 + 1.0 + hw;
-  constexpr double kObjectX = 60.0;  // [m] where the object stands
   const double half = kStraightLength / 2;
   const std::string where(ToString(place));
   VehiclePath k{Polyline({Vec2(-half, y), Vec2(half, y)}), half + kObjectX, "object " + where, false, true};
@@ -572,7 +572,7 @@ std::vector<LaneCombination> Combinations(const ImpactConfiguration& c, CrashTyp
     // south for its right.
     if (variant != 0) throw std::invalid_argument("plan: one geometry for a vehicle across the lane");
     const int lane = A.lane.value ? std::min(*A.lane.value, kerb) : 0;
-    const double y = LaneY(map, Compass::kEast, lane), x = 60.0, reach = 20.0;
+    const double y = LaneY(map, Compass::kEast, lane), x = kObjectX, reach = 20.0;
     const double dir = HasRight(c.struck_area) ? -1.0 : 1.0;
     pa = road_lane(Compass::kEast, lane);
     pb = VehiclePath{Polyline({Vec2(x, y - dir * reach), Vec2(x, y + dir * reach)}), reach,
