@@ -1593,7 +1593,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         smatch bm;
         const string before = Before(t, at, 16);
         const size_t cut_at = std::regex_search(before, bm, kBoundBefore) ? at - static_cast<size_t>(bm.length(0)) : at;
+        // The driver's own clause after it is this vehicle's again: "a bus
+        // at the curb blocked her view, and she pulled out past it".
+        static const regex kDriverResumes(
+            R"((?:,\s*(?:and|so|but|then)|\b(?:and|then))\s+(?:then\s+)?(?:he|she)\s+(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b)");
+        smatch rm;
+        const string rest = t.substr(at);
         t = t.substr(0, cut_at);
+        if (std::regex_search(rest, rm, kDriverResumes)) t += " " + rest.substr(static_cast<size_t>(rm.position()));
         break;
       }
       return t;
