@@ -78,6 +78,9 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kKmh, "kmh");
   s = std::regex_replace(s, kOneWay, "oneway");
   s = std::regex_replace(s, kNonContact, "noncontact");
+  // "u.s. 30", "u.s. route 1": the route's name, not a sentence end.
+  static const regex kUsRoute(R"(\bu\.\s?s\.\s*(?=\d|route\b|highway\b|hwy\b|rt\b))");
+  s = std::regex_replace(s, kUsRoute, "us ");
   static const regex kSingleLane(R"(\bsingle[- ]lane\b)");
   s = std::regex_replace(s, kSingleLane, "1-lane");
   static const regex kSingleTravelLane(R"(\bsingle\s+(travel|through|traffic)\s+lane\b)");
@@ -1770,6 +1773,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       for (size_t j = i + 1; j < sentences.size() && Has(sentences[j].text, kListItem); ++j) mark(sentences[j], 0);
     }
   }
+  // "When the signal turned green, both vehicles began to move forward":
+  // what the vehicles did together before the impact is each one's.
+  {
+    static const regex kAllSubject(
+        R"((?:^|[,;:]\s*|\b(?:and|then|when|as)\s+)(?:both|all|all 3|all 4|the 2|the 3) (?:vehicles|cars|units)\b(?!\s+(?:came|were (?:towed|driven|removed)|rested)\b))");
+    for (size_t i = 0; i < sentences.size() && i < impact; ++i) {
+      const Sentence& s = sentences[i];
+      smatch m;
+      if (s.kind != Kind::kNarrative || !std::regex_search(s.text, m, kAllSubject)) continue;
+      const string together = m.suffix().str();
+      for (size_t k = 1; k < narrative.size(); ++k) ReadMovement(together, narrative[k]);
+    }
+  }
   // "Both vehicles were traveling north": every vehicle the text gives no
   // direction of its own.
   // So does a list of them: "v1, v2 and v3 were northbound".
@@ -1938,6 +1954,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         const string road = ClauseRoad(s.text, static_cast<size_t>(it->position()));
         if (!road.empty()) signed_roads.insert(road);
       }
+      // ... or names it after the sign: "stop sign for the side road".
+      static const regex kSignFor(R"(\bstop signs?\s+(?:for|on|at|controlling|governing)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,3}?)" +
+                                  RoadNoun() + R"(\b)");
+      smatch sf;
+      if (std::regex_search(s.text, sf, kSignFor)) signed_roads.insert(sf[1].str());
     }
     if (signed_roads.size() == 1) v1_road = *signed_roads.begin();
   }
@@ -3069,6 +3090,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     } else {
       type_src = Provenance::kDefaulted;
     }
+  }
+  // A merge from an entrance ramp into the through lanes: NMVCCS codes it
+  // as a turn into the other's path ("turn into path: specifics other", the
+  // development set's straight/1); CIREN case summaries as a sideswipe
+  // ("merging to left").
+  static const regex kEntranceRamp(R"(\b(?:entrance|on-?)\s*ramp\b|\bacceleration lane\b|\bramp\b[^.]{0,60}?\b(?:merg|join))");
+  if (type == CrashType::kSideswipeSame && !case_summary && a && b &&
+      (a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging) && Has(scene, kEntranceRamp)) {
+    type = CrashType::kTurnIntoPath;
   }
   r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : type_src);
   if (a && b) {

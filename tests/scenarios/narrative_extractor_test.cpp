@@ -2745,5 +2745,51 @@ TEST(NarrativeExtractorTest, TrafficLookedForOrWavingIsNotTheSubject) {
               55.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, ClausesAboutTheDriverAndAboutBothVehicles) {
+  // The driver's own clause after another road user in the same sentence.
+  const AccidentRecord bus = kExtractor.Extract(
+      "V1, a 2001 Ford Focus, was leaving the lot of a hardware store on the south side of a two-lane road and its "
+      "driver intended to turn left to go west. V2, a 1998 Buick Regal, was traveling west. The driver of V1 said "
+      "that a delivery truck parked at the curb hid the westbound lane, and she pulled out beyond the truck's "
+      "front. The front of V2 struck the left side of V1.");
+  ASSERT_EQ(bus.vehicles.size(), 2u);
+  EXPECT_EQ(bus.vehicles[0].movement.value, Movement::kTurnLeft);
+  // What both vehicles did together is each one's: a queue starting on green.
+  EXPECT_EQ(PreEventOf("V1, a 1999 Ford Escort, and V2, a 2002 Honda Civic, were stopped in the right lane of a "
+                       "one-way street at a red light. V2 was first in line and V1 was behind it. When the light "
+                       "changed, both vehicles started to move forward. V2 stopped suddenly for a dog, and the front "
+                       "of V1 struck the back of V2.",
+                       2, 0),
+            Movement::kStraight);
+  // A merge from an entrance ramp in an NMVCCS report is a turn into path;
+  // a CIREN case summary codes it as a sideswipe.
+  const std::string merge =
+      "V1 was on the entrance ramp, merging into the right lane of the interstate. V2 was eastbound in the right "
+      "lane. The left side of V1 contacted the right side of V2. The Critical Precrash Event for V1 was this "
+      "vehicle traveling over the lane line on the left side of travel lane.";
+  EXPECT_EQ(kExtractor.Extract(merge).crash.type.value, CrashType::kTurnIntoPath);
+  EXPECT_EQ(kExtractor.Extract("Vehicle one (V1, the case vehicle) was on the entrance ramp, merging into the right "
+                               "lane of the interstate. V2 was eastbound in the right lane. The left side of V1 "
+                               "contacted the right side of V2.")
+                .crash.type.value,
+            CrashType::kSideswipeSame);
+}
+
+TEST(NarrativeExtractorTest, RoadsToldByRouteAndBySign) {
+  // "U.S. 22" is a route's name (V1's road: divided, two lanes each way).
+  const AccidentRecord us = kExtractor.Extract(
+      "The crash occurred at the intersection of U.S. 22, a divided highway, and a four-lane undivided street. U.S. "
+      "22 has two lanes in each direction. V1 was northbound on U.S. 22. V2 was eastbound on the street. The front "
+      "of V1 struck the left side of V2.");
+  EXPECT_TRUE(us.road.divided.value);
+  EXPECT_EQ(us.road.lanes_per_direction.value, 2);
+  // The road a stop sign is "for" is the one V1 stopped on.
+  EXPECT_NEAR(LimitMph("A two-lane side road meets a two-lane highway. Stop sign for the side road. The highway had "
+                       "a posted speed limit of 55 mph; the side road had a posted speed limit of 35 mph. V1 stopped "
+                       "at the stop sign and pulled out. V2 was southbound on the highway. The front of V2 struck "
+                       "the left side of V1."),
+              35.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
