@@ -83,7 +83,7 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kUsRoute, "us ");
   static const regex kSingleLane(R"(\bsingle[- ]lane\b)");
   s = std::regex_replace(s, kSingleLane, "1-lane");
-  static const regex kSingleTravelLane(R"(\bsingle\s+(travel|through|traffic)\s+lane\b)");
+  static const regex kSingleTravelLane(R"(\bsingle\s+(travel|through|traffic|(?:north|south|east|west)bound)\s+lane\b)");
   s = std::regex_replace(s, kSingleTravelLane, "1 $1 lane");
   // "the maximum speed allowed", "the legal speed": the limit.
   static const regex kLimitSynonym(
@@ -460,7 +460,21 @@ string WithoutDistantJunctions(const string& s) {
   // "stopped for a red signal at the next intersection, 30 meters ahead".
   static const regex kQueuedForIt(
       R"(\b((?:stopped|waiting|queued|backed up|stopping)\s+(?:\w+\s+){0,3}?for\s+(?:a|the)\s+(?:red\s+)?(?:traffic\s+)?(?:light|signal)\s+at\s+the\s+)next\s+)");
-  return std::regex_replace(std::regex_replace(s, kQueuedForIt, "$1"), kDistant, " ");
+  // One told far ahead of the crash: "slowing for congestion at a
+  // signalized intersection about 600 meters ahead" (100 m or more).
+  static const regex kFarAhead(
+      R"(\b(?:intersection|junction|cross street)\s+(?:located\s+|situated\s+)?(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+|over\s+|more than\s+)?(\d+(?:\.\d+)?)\s*(km|kilomet\w+|mi|miles?|m|meters?|metres?|ft|feet|yards?|yds?)\s+(?:ahead|away|further on|farther on|down the road|up the road|beyond)\b)");
+  const string far = ReplaceWith(s, kFarAhead, [](const smatch& m) {
+    const double n = std::stod(m[1].str());
+    const string unit = m[2].str();
+    const double metres = unit[0] == 'k'               ? n * 1000
+                          : unit.rfind("mi", 0) == 0   ? n * 1609
+                          : unit[0] == 'f'             ? n * 0.3048
+                          : unit[0] == 'y'             ? n * 0.9144
+                                                       : n;
+    return metres >= 100 ? string(" ") : m.str();
+  });
+  return std::regex_replace(std::regex_replace(far, kQueuedForIt, "$1"), kDistant, " ");
 }
 
 string EscapeRegex(const string& s) {
@@ -520,7 +534,9 @@ std::optional<Compass> DirectionIn(const string& s) {
 // (", and a ..."), however far back ("the north/south roadway, which formed
 // the south leg of the intersection, was a 2-lane ...").
 size_t RoadPhraseStart(const string& s, size_t pos) {
-  static const regex kNextRoad(R"(\band\s+(?:a|an|the)\s+)");
+  // "... with 2 lanes each way, and mill street, a 2-lane ...": a road
+  // named after ", and" starts one too.
+  static const regex kNextRoad(R"(\band\s+(?:a|an|the)\s+|,\s*and\s+(?=[a-z]+(?:\s+[a-z]+)?\s+(?:street|avenue|road|drive|lane|boulevard|parkway|pike|highway)\s*,))");
   size_t start = 0;
   const string upto = s.substr(0, std::min(pos, s.size()));
   for (auto it = std::sregex_iterator(upto.begin(), upto.end(), kNextRoad); it != std::sregex_iterator(); ++it) {
@@ -643,7 +659,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kRolledStop(
       R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed\b[^.;]{0,60}?\bbut (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
   static const regex kNoStop(
-      R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
+      R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:did not|didn't|failed to|never|without|not)\s+(?:come|coming|came)\s+to\s+a\s+(?:complete\s+|full\s+)?stop\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
       R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
@@ -665,7 +681,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
-      R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
+      R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|)"
+      // "was westbound in lane two, slowing from about 50 mph".
+      R"(,\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -809,8 +827,10 @@ struct MovementDecision {
 
 // A vehicle described parked that then enters the road, turns or pulls
 // out was leaving its parking position, not a parked object.
+// So is one that backed out of its space (NASS "leaving a parking position":
+// its backing is "other than for parking" only off a parking space).
 bool LeftParking(const MovementEvidence& n) {
-  return n.parked && (n.entered || n.turn_left || n.turn_right || n.merge || n.lane_change);
+  return n.parked && (n.entered || n.turn_left || n.turn_right || n.merge || n.lane_change || n.back);
 }
 
 MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidence& st) {
@@ -818,7 +838,10 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   const MovementEvidence& e = n.any_narrative() ? n : st;
   auto both = [](Movement m, Provenance p) { return MovementDecision{m, m, p}; };
   if (LeftParking(n)) {
-    const Movement path = n.turn_left ? Movement::kTurnLeft : n.turn_right ? Movement::kTurnRight : Movement::kMerging;
+    const Movement path = n.turn_left    ? Movement::kTurnLeft
+                          : n.turn_right ? Movement::kTurnRight
+                          : n.back       ? Movement::kBacking
+                                         : Movement::kMerging;
     return MovementDecision{path, Movement::kMerging, Provenance::kStated};
   }
   if (e.parked || n.parked) return both(Movement::kStopped, Provenance::kStated);
@@ -918,7 +941,8 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
 
 // The limit a road class usually has in the U.S., for reports that name the
 // class but not the limit: freeways 70 mph, parking lots and private roads
-// 15, residential streets 25, rural roads and state or county highways 55,
+// 15, residential streets 25 (30 where the report tells its limits, below),
+// rural roads and state or county highways 55,
 // urban streets 30 (45 on multi-lane urban arterials: `lanes_total` >= 3),
 // one-way streets 30. A road the report describes (`road_described`: its
 // lanes were counted) without naming any class gets 55, the statutory limit
@@ -944,7 +968,9 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
   static const regex kHighway(R"(\bhighway\b)");
   if (Has(scene, kFreeway)) return 70.0;
   if (Has(scene, kPrivate)) return 15.0;
-  if (Has(scene, kResidential)) return 25.0;
+  // (An unposted residential street in a report that tells its limits is
+  // the town's statutory 30 as well.)
+  if (Has(scene, kResidential)) return limits_told ? 30.0 : 25.0;
   if (Has(scene, kRural)) return 55.0;
   if (Has(scene, kUrban)) return lanes_total >= 3 && !limits_told ? 45.0 : 30.0;
   if (Has(scene, kOneWayStreet)) return 30.0;
@@ -1090,6 +1116,17 @@ class RoadNames {
   }
 
   bool Mentioned(const string& t) const { return !names_.empty() && Has(t, pattern_); }
+
+  // The named road right after a value: "25 mph (40 kmh) on birch lane".
+  string OnAfter(const string& tail) const {
+    if (names_.empty()) return {};
+    static const regex kOn(R"(^\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:on|for|along)\s+(?:the\s+)?)");
+    smatch on, m;
+    if (!std::regex_search(tail, on, kOn)) return {};
+    const string rest = tail.substr(static_cast<size_t>(on.length(0)));
+    if (!std::regex_search(rest, m, pattern_, std::regex_constants::match_continuous)) return {};
+    return Resolve(m[1].str());
+  }
 
   // The named road a count's own noun phrase ends in ("2-lane township
   // road", "a 2-lane, 2-way kessler lane"): its words follow the count with
@@ -1505,6 +1542,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
     const Sentence& s = sentences[i];
+    const int focus_before = focus;  // who "she stated that ..." is
     struct Start {
       size_t pos;
       int vehicle;
@@ -1646,6 +1684,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kBelief(R"(\b(?:thought|believed|assumed|expected|figured)\b)");
       smatch bm;
       if (starts[k].perceived && std::regex_search(seg_text, bm, kBelief)) {
+        seg_text = seg_text.substr(0, static_cast<size_t>(bm.position()));
+      }
+      // In a driver's account of another vehicle ("she stated that the buick
+      // pulled out in front of her and she braked but could not stop"), the
+      // teller's own clause is not the other's.
+      static const regex kTellerClause(R"(\b(?:and|but|so|then)\s+(?:then\s+)?(?:he|she)\b)");
+      static const regex kOpensWithDriver(R"(^\s*(?:the\s+)?(?:driver|operator)\s+of\s*$)");
+      const bool named_teller = first == 0 || Has(s.text.substr(0, first), kOpensWithDriver);
+      const int teller = named_teller ? starts.front().vehicle : focus_before;
+      if (s.kind == Kind::kStatement && teller > 0 && starts[k].vehicle != teller &&
+          std::regex_search(seg_text, bm, kTellerClause)) {
         seg_text = seg_text.substr(0, static_cast<size_t>(bm.position()));
       }
       segments.push_back({starts[k].vehicle, i, seg_text, starts[k].perceived});
@@ -2030,6 +2079,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // is not this one's.
         const size_t start = RoadPhraseStart(s.text, pos);
         rs.axis = AxisIn(s.text.substr(start, pos - start + static_cast<size_t>(m.length(0))));
+        // "..., and mill street, a 2-lane north/south residential street":
+        // the count's own noun phrase before the wider window.
+        if (!rs.axis) {
+          static const regex kOwnPhraseAxis(R"(^[^,;.]{0,12}?\b((?:north|south|east|west)(?:/|-|\s+and\s+)(?:north|south|east|west))\b)");
+          smatch am;
+          const string own = s.text.substr(pos + static_cast<size_t>(m.length(0)), 30);
+          if (std::regex_search(own, am, kOwnPhraseAxis)) rs.axis = AxisIn(am[1].str());
+        }
         if (!rs.axis) rs.axis = AxisIn(around);
         rs.axis = inherited_axis(i, rs.axis);
         smatch sm;
@@ -2667,9 +2724,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
                             : std::regex_search(just_before, rn, kOnRoadNounBefore) ? rn[1].str()
                             : std::regex_search(just_before, rn, kRoadPostedAt) && !GenericRoad(rn[1].str()) ? rn[1].str()
                                                                                     : ClauseRoad(s.text, pos);
+        const string on_named = road_names.OnAfter(tail);
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
                           inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++, road,
-                          named_at(static_cast<size_t>(&s - sentences.data()), pos)});
+                          on_named.empty() ? named_at(static_cast<size_t>(&s - sentences.data()), pos) : on_named});
         found = true;
       }
       smatch m;

@@ -2791,5 +2791,61 @@ TEST(NarrativeExtractorTest, RoadsToldByRouteAndBySign) {
               35.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, AccountsRollsAndParkingSpaces) {
+  // A junction far ahead does not place the crash.
+  EXPECT_EQ(kExtractor
+                .Extract("V1 and V2 were eastbound on a four-lane divided highway. Traffic was slowing for a signalized "
+                         "intersection about 500 meters ahead. The front of V1 struck the back of V2.")
+                .crash.location.value,
+            CrashLocation::kSegment);
+  // In a driver's account of another vehicle, her own braking is not its.
+  EXPECT_EQ(PreEventOf("V1, a 2003 Chevrolet Malibu, was traveling north. V2, a 1997 Ford Escort, stopped at the "
+                       "stop sign on the side street. V2 then proceeded to turn left. The front of V1 struck the left "
+                       "side of V2. The Malibu's driver stated that the Ford pulled out right in front of her and she "
+                       "braked but could not stop.",
+                       2, 1),
+            Movement::kStopped);
+  // "Did not come to a complete stop" is no stop.
+  EXPECT_EQ(PreEventOf("V1 was westbound approaching a stop sign. V2 was southbound on the through road. V1 slowed "
+                       "but did not come to a complete stop and rolled into the intersection, where the front of V2 "
+                       "struck the left side of V1.",
+                       2, 0),
+            Movement::kSlowing);
+  // Backing out of a parking space is leaving a parking position.
+  const AccidentRecord backed = kExtractor.Extract(
+      "V1 had been parked in an angled space on the north side of the street. V2 was traveling west. The driver of "
+      "V1 backed out of the parking space into the westbound lane, and the front of V2 struck the back of V1.");
+  ASSERT_EQ(backed.vehicles.size(), 2u);
+  EXPECT_EQ(backed.vehicles[0].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(backed.vehicles[0].movement.value, Movement::kBacking);
+}
+
+TEST(NarrativeExtractorTest, RoadsListedInOneSentence) {
+  // ", and Pine Street, a two-lane north/south street": the count is Pine
+  // Street's, and Route 4's two lanes each way (undivided) are V1's.
+  const AccidentRecord listed = kExtractor.Extract(
+      "The crash occurred at the intersection of Route 4, an east/west undivided roadway with two lanes in each "
+      "direction, and Pine Street, a two-lane north/south street. V1 was westbound on Route 4. V2 was northbound on "
+      "Pine Street. The front of V1 struck the right side of V2.");
+  EXPECT_EQ(listed.road.lanes_total.value, 4);
+  // "Two southbound lanes and a single northbound lane": three in all.
+  EXPECT_EQ(kExtractor
+                .Extract("Elm Avenue had two southbound lanes and a single northbound lane and was undivided. V1 was "
+                         "southbound on Elm Avenue. V2 was northbound. The front of V2 struck the left side of V1.")
+                .road.lanes_total.value,
+            3);
+  // "45 mph on Cedar Road and 25 mph on Aspen Lane": each limit its road.
+  EXPECT_NEAR(LimitMph("Aspen Lane ends at Cedar Road. The posted speed limit was 45 mph on Cedar Road and 25 mph on "
+                       "Aspen Lane. V1 was northbound on Aspen Lane and stopped at the stop sign. V2 was eastbound on "
+                       "Cedar Road. The front of V2 struck the left side of V1."),
+              25.0, 0.5);
+  // A report that tells its limits and gives none here: an unposted town
+  // street's 30 mph, residential or not.
+  EXPECT_NEAR(LimitMph("The crash occurred at the intersection of two residential streets. V1 was northbound. V2 "
+                       "was eastbound. The front of V1 struck the left side of V2. The Critical Precrash Event for V1 "
+                       "was this vehicle traveling, crossing over (passing through) intersection."),
+              30.0, 0.5);
+}
+
 }  // namespace
 }  // namespace accsim
