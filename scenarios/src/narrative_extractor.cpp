@@ -1000,7 +1000,7 @@ const regex& RoadWord() {
 // meets ...".
 const string& WhereRoadsMeet() {
   static const string kPattern =
-      R"(\bintersecting\s+(?:[\w-]+\s+){0,3}?(?:road|street|roadway|highway|avenue)\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)\s+(?:crosses|intersects)\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)";
+      R"(\bintersecting\s+(?:[\w-]+\s+){0,3}?(?:road|street|roadway|highway|avenue)\b|\bwhere\s+(?:the\s+)?(?:[a-z0-9-]+\s+){1,3}meets\b|\bwhere\s+(?:[\w'-]+\s+){1,3}?(?:road|street|avenue|drive|route|highway|lane|boulevard|pike)(?:\s+\d{1,4}[a-z]?)?\s+(?:crosses|intersects)\b|\bwhere\s+(?:that|the|this|it)\s+(?:[a-z0-9-]+\s+){0,2}?crosses\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:road|street|route|highway|roadway|avenue|boulevard)\b|\bat the crossing\b)";
   return kPattern;
 }
 
@@ -1362,7 +1362,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // "the stopped jetta", "the oncoming ford": a state word may come first.
       const regex alias_re(
           R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|slow-moving|slowing|disabled|stalled|first|second)\s+)?()" +
-          alt + R"()\b(?!\s+driver))");
+          // (Not a place named after one: "the car wash", "the truck stop".)
+          alt + R"()\b(?!\s+(?:driver|wash|dealership|dealer|lot|park|port|stop|yard|rental|shop|show|terminal|scale|scales)\b))");
       std::map<string, int> lookup(aliases.begin(), aliases.end());
       for (Sentence& s : sentences) {
         s.text = ReplaceWith(s.text, alias_re, [&](const smatch& m) { return "v" + std::to_string(lookup[m[1].str()]); });
@@ -1970,6 +1971,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     string n = road_names.Subject(sentences[i].text, pos);
     if (n.empty() && i > 0 && sentences[i].refs.empty() && !road_names.Mentioned(sentences[i].text)) {
       n = road_names.Subject(sentences[i - 1].text, 40);
+      // "... where county road 12 crosses us highway 41. the highway ran
+      // north/south ...": a sentence opening on another kind of road is
+      // not about the name before.
+      static const regex kOpensOnRoad(R"(^\s*the\s+(road|roadway|street|highway|avenue|boulevard|route|freeway|interstate)\b)");
+      smatch om;
+      if (!n.empty() && std::regex_search(sentences[i].text, om, kOpensOnRoad) && n.find(om[1].str()) == string::npos &&
+          om[1].str() != "roadway") {
+        n.clear();
+      }
     }
     return n;
   };
@@ -2428,7 +2438,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // "2 through lanes in each direction ..., with a left-turn lane for
         // southbound traffic", V1 southbound: its side has the bay too.
         static const regex kBayOfOneDirection(
-            R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+for\s+(north|south|east|west)bound\s+traffic\b|\b(?:a|an|1)\s+(north|south|east|west)bound\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b)");
+            R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+for\s+(north|south|east|west)bound\s+traffic\b|\b(?:a|an|1)\s+(?:additional\s+|extra\s+|exclusive\s+|separate\s+|dedicated\s+)?(north|south|east|west)bound\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b)");
         smatch bm;
         const string& per_sentence = sentences[best->sentence].text;
         if (!v1s_direction && !best->centre && v1_dir >= 0 &&
@@ -3283,11 +3293,17 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       if (sentences[i].kind == Kind::kNarrative && before) pre += sentences[i].text;
     }
     pre = WithoutDistantJunctions(pre);
+    // Where the ramp it was on ends is not where it crashed: "a 1-lane exit
+    // ramp that loops to the right ... and ends at a signalized intersection".
+    static const regex kRampEndsAt(
+        R"(\bramp\b[^.;]{0,80}?\b(?:ends|ended|terminates|terminated)\s+at\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,3}?(?:intersection|junction)\b)");
+    pre = std::regex_replace(pre, kRampEndsAt, " ramp ");
     // Where a road meets or crosses another is a weaker sign than "in the
     // intersection": a ramp "that meets a surface street at a signal" still
     // holds a crash in its queue.
+    // (A median crossover is coded as an intersection.)
     static const regex kAtIntersectionStrong(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bintersection of\b)");
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction|crossover)\b|\bintersection of\b)");
     static const regex kAtIntersection(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)" + WhereRoadsMeet());
     // A vehicle leaving a driveway or lot puts the crash at its access, even

@@ -2847,5 +2847,41 @@ TEST(NarrativeExtractorTest, RoadsListedInOneSentence) {
               30.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, WhereCrashesHappenAtAccessesRampsAndCrossovers) {
+  auto location = [](const std::string& text) { return kExtractor.Extract(text).crash.location.value; };
+  // "Where County Road 7 crosses ...": a junction; the next sentence about
+  // "the highway" is not County Road 7's.
+  const std::string crossing =
+      "This crash occurred where County Road 7 crosses US Highway 20. The highway ran east/west with a posted speed "
+      "limit of 55 mph. County Road 7 was a two-lane road with a posted speed limit of 35 mph. V1 was northbound on "
+      "County Road 7 and stopped at the stop sign. V2 was eastbound. The front of V2 struck the left side of V1.";
+  EXPECT_EQ(location(crossing), CrashLocation::kJunction);
+  EXPECT_NEAR(LimitMph(crossing), 35.0, 0.5);
+  // The intersection an exit ramp ends at is not where a crash in its loop was.
+  EXPECT_EQ(location("The crash occurred on a 1-lane exit ramp that curves to the right and ends at a signalized "
+                     "intersection. Traffic was backed up on the ramp. V2 was slowing on the ramp. V1 was behind V2. "
+                     "The front of V1 struck the back of V2 in the curve."),
+            CrashLocation::kRamp);
+  // "Stopped at the car wash exit": a driveway, and "the car wash" is no
+  // vehicle even when one vehicle is the only car.
+  EXPECT_EQ(location("V1, a 2001 Toyota Corolla, was stopped at the car wash exit waiting to turn left. V2, a 2004 "
+                     "Ford F-150 pickup, was westbound. V1 pulled out and the front of V2 struck the left side of "
+                     "V1."),
+            CrashLocation::kDriveway);
+  // A median crossover is coded as an intersection.
+  EXPECT_EQ(location("The crash occurred at a median crossover on a divided highway. V1 was stopped in the left-turn "
+                     "lane and then pulled into the crossover. V2 was southbound. The front of V2 struck the right "
+                     "side of V1."),
+            CrashLocation::kJunction);
+  // "One through lane in each direction and an additional northbound
+  // right-turn lane", V1 northbound: three lanes.
+  EXPECT_EQ(kExtractor
+                .Extract("The north/south street had one through lane in each direction and an additional "
+                         "northbound right-turn lane. V1 was northbound in the right-turn lane. V2 was eastbound on "
+                         "the cross street. The front of V2 struck the left side of V1.")
+                .road.lanes_total.value,
+            3);
+}
+
 }  // namespace
 }  // namespace accsim
