@@ -2577,8 +2577,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       r.road.lanes_total.Set(4, Provenance::kInferred);
     }
 
-    // V1 leaving a driveway or parking lot was on it: NASS counts its lanes,
-    // a two-way drive of one lane each way unless the report counts them.
+    // V1 leaving a driveway or parking lot was on it: NMVCCS counts its
+    // lanes, a two-way drive of one lane each way unless the report counts
+    // them.
     static const regex kMiddleLane(R"(\bmiddle (?:travel |through )?lane\b)");
     bool v1_from_driveway = false, v1_middle_lane = false;
     for (const Segment& seg : segments) {
@@ -2594,7 +2595,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           R"(^\d[- ]lanes?\b(?:[^.;]{0,40}?\b(?:road|roadway|street|highway|avenue|boulevard|route|trafficway)\b))");
       return rs.owner == 1 && !Has(sentences[rs.sentence].text.substr(rs.pos, 60), kRoadCount);
     };
-    if (v1_from_driveway && !(best && counts_the_drive(*best))) {
+    // (NMVCCS codes the drive, t/21 and crossing/8; a CIREN case summary
+    // the road it enters, as the invented CIREN-style cases of it do, unless
+    // it counts the drive's own lanes: "a 2-lane, 2-way driveway".)
+    static const regex kDriveCounted(R"(\b\d[- ]lanes?,?\s+(?:[\w-]+,?\s+){0,2}?(?:driveway|drive|alley)\b)");
+    if (v1_from_driveway && (!case_summary || Has(scene, kDriveCounted)) && !(best && counts_the_drive(*best))) {
       // ... one lane when the report says the drive is one-way or one lane
       // ("a one-way, exit-only driveway", "a narrow, 1-lane paved alley").
       static const regex kOneLaneDrive(

@@ -2883,5 +2883,27 @@ TEST(NarrativeExtractorTest, WhereCrashesHappenAtAccessesRampsAndCrossovers) {
             3);
 }
 
+TEST(NarrativeExtractorTest, ACarLeavingADriveCountsTheDriveInNmvccsAndTheRoadInCiren) {
+  const std::string road =
+      "a parking lot on the south side of a five-lane, two-way road (two lanes each way and a center two-way "
+      "left-turn lane) and intended to turn left. V2 was traveling east in the left eastbound lane. The front of V2 "
+      "struck the left side of V1.";
+  // NMVCCS (a report quoting the coded events): the drive, one lane each way.
+  EXPECT_EQ(kExtractor
+                .Extract("V1 was exiting " + road +
+                         " The Critical Precrash Event for V1 was this vehicle traveling, turning left at "
+                         "intersection.")
+                .road.lanes_total.value,
+            2);
+  // A CIREN case summary: the road it enters ...
+  EXPECT_EQ(kExtractor.Extract("Vehicle one (V1 - case vehicle) was exiting " + road).road.lanes_total.value, 5);
+  // ... unless it counts the drive's own lanes.
+  EXPECT_EQ(kExtractor
+                .Extract("Vehicle one (V1 - case vehicle) was exiting " + road +
+                         " The parking lot driveway is a two-lane, two-way driveway.")
+                .road.lanes_total.value,
+            2);
+}
+
 }  // namespace
 }  // namespace accsim
