@@ -123,6 +123,16 @@ string Normalise(std::string_view in) {
       {regex(R"(\bfifth\b)"), "5th"},
   }};
   s = ReplaceEach(s, kOrdinals);
+  // An approach told by its lanes: "its southbound approach had a left-turn
+  // lane and a right-turn lane" (2 southbound lanes), "the northbound side
+  // had 2 through lanes and a left-turn lane" (3).
+  static const regex kApproachLanes(
+      R"(\b(north|south|east|west)bound\s+(approach|side|leg)\s+(had|has|consisted of|included)\s+(?:(\d)\s+(?:through|travel)\s+lanes?|(?:a|an|1)\s+(?:left|right)[- ]turn(?:[- ]only)?\s+lane)\s+(?:and|plus)\s+(?:a|an|1)\s+(?:left|right)[- ]turn(?:[- ]only)?\s+lane\b)");
+  s = ReplaceWith(s, kApproachLanes, [](const smatch& m) {
+    const int n = (m[4].matched ? std::stoi(m[4].str()) : 1) + 1;
+    return m[1].str() + "bound " + m[2].str() + " " + m[3].str() + " " + std::to_string(n) + " " + m[1].str() +
+           "bound lanes";
+  });
   // Vehicle references: "vehicle #1", "vehicle no. 2", "veh. 3", "v-1", "unit 2".
   // A number followed by a unit ("car 2 mph", "unit 3 lanes") is not a
   // vehicle, nor a body style's ("a honda cr-v 4-door").
@@ -2394,7 +2404,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             (rs.axis && best->axis && rs.axis != best->axis)) {
           continue;
         }
-        if (rs.sentence > best->sentence + 1 || rs.sentence + 1 < best->sentence) continue;
+        // (A count of V1's own direction may come two sentences on: "a
+        // 4-lane divided highway. the highway was divided by a median ... .
+        // the northbound side had 3 northbound lanes".)
+        const size_t reach = of_v1s_direction(rs) && rs.directional ? 2 : 1;
+        if (rs.sentence > best->sentence + reach || rs.sentence + 1 < best->sentence) continue;
         if (!best->axis && rs.axis && v1_axis >= 0 && *rs.axis != v1_axis) continue;  // a road across V1's course
         if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
         if (OfAnotherRoad(rs, *best)) continue;

@@ -2905,5 +2905,27 @@ TEST(NarrativeExtractorTest, ACarLeavingADriveCountsTheDriveInNmvccsAndTheRoadIn
             2);
 }
 
+TEST(NarrativeExtractorTest, ApproachesToldByTheirTurnLanes) {
+  // "Its southbound approach had a left-turn lane and a right-turn lane, and
+  // it had one northbound lane", V1 southbound: three lanes.
+  EXPECT_EQ(kExtractor
+                .Extract("Oak Street ended at the avenue from the north; its southbound approach had a left-turn "
+                         "lane and a right-turn lane, and it had one northbound lane. V1 was southbound on Oak "
+                         "Street in the left-turn lane. V2 was westbound on the avenue. The front of V2 struck the "
+                         "left side of V1.")
+                .road.lanes_total.value,
+            3);
+  // "The northbound side had two through lanes and a left-turn lane", two
+  // sentences after the divided highway is named, V1 northbound: three.
+  EXPECT_EQ(kExtractor
+                .Extract("The crash occurred at a T-intersection where a county road met a four-lane divided "
+                         "highway from the east. The highway was divided by a 20-meter grass median with a paved "
+                         "crossover at the intersection. The northbound side had two through lanes and a left-turn "
+                         "lane into the crossover; the southbound side had two through lanes. V1 was traveling north in the left-turn lane. V2 was traveling south. The front of "
+                         "V2 struck the right side of V1.")
+                .road.lanes_per_direction.value,
+            3);
+}
+
 }  // namespace
 }  // namespace accsim
