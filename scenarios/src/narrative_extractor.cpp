@@ -3183,8 +3183,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // development set's straight/1); CIREN case summaries as a sideswipe
   // ("merging to left").
   static const regex kEntranceRamp(R"(\b(?:entrance|on-?)\s*ramp\b|\bacceleration lane\b|\bramp\b[^.]{0,60}?\b(?:merg|join))");
-  if (type == CrashType::kSideswipeSame && !case_summary && a && b &&
-      (a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging) && Has(scene, kEntranceRamp)) {
+  const bool merger = a && b && (a->movement.value == Movement::kMerging || b->movement.value == Movement::kMerging);
+  if (type == CrashType::kSideswipeSame && !case_summary && merger && Has(scene, kEntranceRamp)) {
     type = CrashType::kTurnIntoPath;
   }
   r.crash.type.Set(type, type == CrashType::kUnknown ? Provenance::kDefaulted : type_src);

@@ -2921,8 +2921,9 @@ TEST(NarrativeExtractorTest, ApproachesToldByTheirTurnLanes) {
                 .Extract("The crash occurred at a T-intersection where a county road met a four-lane divided "
                          "highway from the east. The highway was divided by a 20-meter grass median with a paved "
                          "crossover at the intersection. The northbound side had two through lanes and a left-turn "
-                         "lane into the crossover; the southbound side had two through lanes. V1 was traveling north in the left-turn lane. V2 was traveling south. The front of "
-                         "V2 struck the right side of V1.")
+                         "lane into the crossover; the southbound side had two through lanes. V1 was traveling "
+                         "north in the left-turn lane. V2 was traveling south. The front of V2 struck the right "
+                         "side of V1.")
                 .road.lanes_per_direction.value,
             3);
 }
