@@ -2688,11 +2688,29 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     static const regex kValue(R"(\b(\d{2,3})(?:\s*|-)(kmh|mph)\b)");  // "45 mph", "a 45-mph zone"
     static const regex kBare(R"(\b(?:speed limit|limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet)))");
     static const regex kAdvisory(R"((?:advisory|suggested|recommended|warning|curve)[^.]{0,25}$)");
+    // A telegraphic list goes on after a semicolon without the limit word
+    // ("highway posted 72 kmh (45 mph); side road 40 kmh (25 mph)").
+    static const regex kListedRoadLimit(R"(^\s*(?:(?:the|a|an)\s+)?(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
+                                        R"(\s*(?:,|:|-|is|was)?\s*(\d{2,3})\s*(kmh|mph)\b)");
     size_t order = 0;
+    size_t last_with_limit = sentences.size();
     for (const Sentence& s : sentences) {
       if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
+      const size_t index = static_cast<size_t>(&s - sentences.data());
       if (s.text.find("limit") == string::npos && s.text.find("posted") == string::npos &&
           s.text.find(" zone") == string::npos) {
+        smatch m;
+        if (last_with_limit + 1 == index && std::regex_search(s.text, m, kListedRoadLimit)) {
+          const bool kmh = m[3].str() == "kmh";
+          const double value = std::stod(m[2].str());
+          const size_t at = static_cast<size_t>(m.position(2));
+          if (value >= 5 && value <= 180) {
+            limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner_at(s, at),
+                              inherited_axis(index, AxisIn(s.text.substr(0, at))), order++, m[1].str(),
+                              named_at(index, at)});
+            last_with_limit = index;
+          }
+        }
         continue;
       }
       bool found = false;
@@ -2755,17 +2773,18 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
                                                                                     : ClauseRoad(s.text, pos);
         const string on_named = road_names.OnAfter(tail);
         limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
-                          inherited_axis(static_cast<size_t>(&s - sentences.data()), axis), order++, road,
-                          on_named.empty() ? named_at(static_cast<size_t>(&s - sentences.data()), pos) : on_named});
+                          inherited_axis(index, axis), order++, road,
+                          on_named.empty() ? named_at(index, pos) : on_named});
         found = true;
+        last_with_limit = index;
       }
       smatch m;
       // ... a bare number only when it could be a limit in mph ("limit: 00" is none).
       if (!found && std::regex_search(s.text, m, kBare) && std::stoi(m[1].str()) >= 5) {
         const size_t at = static_cast<size_t>(m.position());
         limits.push_back({std::stoi(m[1].str()) * kMphToMps, "mph", owner_at(s, at),
-                          inherited_axis(static_cast<size_t>(&s - sentences.data()), AxisIn(s.text.substr(0, at))),
-                          order++, ClauseRoad(s.text, at), named_at(static_cast<size_t>(&s - sentences.data()), at)});
+                          inherited_axis(index, AxisIn(s.text.substr(0, at))),
+                          order++, ClauseRoad(s.text, at), named_at(index, at)});
       }
     }
     // No limit word anywhere: a value that describes the road itself ("a

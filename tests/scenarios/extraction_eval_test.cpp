@@ -138,7 +138,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.90}, {"crash_type", 0.95}}},
       {"nmvccs_style_aj", 40,
-       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.95},
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
         {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.95}}},
       {"nmvccs_style_al", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},

@@ -2247,6 +2247,22 @@ TEST(NarrativeExtractorTest, ALimitAfterItsRoadAndARoadAfterCommas) {
               25.0, 0.5);
 }
 
+TEST(NarrativeExtractorTest, ATelegraphicLimitListGoesOnAfterASemicolon) {
+  // "; side road 40 km/h": the list's second road has its own limit without
+  // the limit word again.
+  EXPECT_NEAR(LimitMph("T-intersection of a two-lane north/south highway and a two-lane road that ends at it from the "
+                       "west. Stop sign for the side road. Highway posted 72 km/h (45 mph); side road 40 km/h (25 "
+                       "mph). V1 (1993 Toyota Camry) stopped at the stop sign on the side road and then began a left "
+                       "turn. V2 (2002 Chevrolet Trailblazer) was southbound on the highway. The front of V2 struck "
+                       "the left side of V1."),
+              25.0, 0.5);
+  // A speed in the next sentence is no limit: "the car 60 km/h" follows no
+  // road noun.
+  EXPECT_NEAR(LimitMph("V1 was northbound on a two-lane highway posted 72 km/h (45 mph); the driver estimated 60 "
+                       "km/h. V2 pulled out of a driveway and the front of V1 struck the left side of V2."),
+              45.0, 0.5);
+}
+
 TEST(NarrativeExtractorTest, AVehicleNamedBeforeItsNumberIsNamedWithinItsSentence) {
   // "the northbound lanes. The Mercury Sable (Vehicle #1)": the name is
   // "the mercury sable", not everything from the previous sentence's "the".
