@@ -2938,8 +2938,8 @@ TEST(NarrativeExtractorTest, ApproachesToldByTheirTurnLanes) {
                          "highway from the east. The highway was divided by a 20-meter grass median with a paved "
                          "crossover at the intersection. The northbound side had two through lanes and a left-turn "
                          "lane into the crossover; the southbound side had two through lanes. V1 was traveling "
-                         "north in the left-turn lane. V2 was traveling south. The front of V2 struck the right "
-                         "side of V1.")
+                         "north on the highway in the left-turn lane. V2 was traveling south. The front of V2 struck "
+                         "the right side of V1.")
                 .road.lanes_per_direction.value,
             3);
 }
