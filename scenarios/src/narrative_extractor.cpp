@@ -2529,9 +2529,15 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       static const regex kQualifiedRoad(R"(^(?:county|state|rural|city|residential|side|cross|access|service|frontage)\s)");
       if (distinctive && Has(v1_road, kQualifiedRoad)) {
         static const regex kNounAfter(R"(^\s*(?:[\w-]+\s+){0,2}?)" + RoadNoun() + R"(\b)");
+        // (The word may hold its noun: "of a 6-lane, divided, limited access
+        // interstate".)
         smatch nm;
+        const string said = dm.str();
         const string after = cleaned.substr(at + static_cast<size_t>(dm.length()));
-        if (std::regex_search(after, nm, kNounAfter) && v1_road.find(nm[1].str()) == string::npos) return false;
+        if ((std::regex_search(said, nm, RoadWord()) || std::regex_search(after, nm, kNounAfter)) &&
+            v1_road.find(nm[1].str()) == string::npos) {
+          return false;
+        }
       }
       const size_t from = RoadPhraseStart(cleaned, at);
       string phrase = cleaned.substr(from, at - from + static_cast<size_t>(dm.length()) + 25);

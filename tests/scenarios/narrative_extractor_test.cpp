@@ -2461,6 +2461,12 @@ TEST(NarrativeExtractorTest, DividedOrUndividedBelongsToTheRoadItQualifies) {
                      "street. V1 was traveling east on the boulevard. V2 was traveling north on the city street. The "
                      "front of V1 struck the left side of V2.")
                    .divided.value);
+  // "Of a six-lane, divided, limited access interstate": the words that say
+  // it name V1's road themselves.
+  EXPECT_TRUE(lanes("V1 was traveling west in the center westbound lane of a six-lane, divided, limited access "
+                    "interstate highway (three lanes westbound, concrete median barrier, three lanes eastbound). V2 "
+                    "was ahead of V1 in the same lane. The front of V1 struck the rear of V2.")
+                  .divided.value);
 }
 
 TEST(NarrativeExtractorTest, ADriftOutOfTheLaneIsGoingStraightBeforeIt) {
