@@ -764,9 +764,10 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kEarlierMove(
       R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b)");
   // Nor one only meant: "had looked over his shoulder to change lanes and
-  // did not see that traffic had stopped".
+  // did not see that traffic had stopped", "was checking his mirror before
+  // changing lanes".
   static const regex kMeantLaneChange(
-      R"(\b(?:look\w*|check\w*|glanc\w*|want\w*|intend\w*|plann\w*|prepar\w*|about)\b[^.;]{0,40}?\bto change lanes?\b)");
+      R"(\b(?:look\w*|check\w*|glanc\w*|want\w*|intend\w*|plann\w*|prepar\w*|about)\b[^.;]{0,40}?\b(?:to change|(?:before|prior to) changing) lanes?\b)");
   // Nor the swerve that tried to avoid the crash ("steered left into the
   // inside lane, but the front of v1 struck ..."): that follows the
   // critical event.

@@ -2539,6 +2539,15 @@ TEST(NarrativeExtractorTest, TheCaseVehicleOnceNumberedAndMovesOnlyMeant) {
   ASSERT_EQ(meant.vehicles.size(), 2u);
   EXPECT_EQ(meant.vehicles[0].pre_event.value, Movement::kStraight);
   EXPECT_EQ(meant.crash.type.value, CrashType::kRearEnd);
+  // Nor "checking his mirror before changing lanes".
+  const AccidentRecord before = kExtractor.Extract(
+      "Northbound traffic was moving at about 10 mph because of congestion, and V1 was moving with that traffic. "
+      "V2, a box truck, was also northbound in the right lane behind V1. The driver of V2 stated he was checking his "
+      "mirror before changing lanes and did not notice that traffic ahead had slowed. The front of V2 struck the back "
+      "of V1.");
+  ASSERT_EQ(before.vehicles.size(), 2u);
+  EXPECT_EQ(before.vehicles[1].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(before.crash.type.value, CrashType::kRearEnd);
   // One that spun across the centerline and was broadsided by an oncoming
   // vehicle is in the opposite-direction group, not an angle crash.
   const AccidentRecord spun = kExtractor.Extract(
