@@ -660,7 +660,11 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // stated ... the car turned right in front of her".
   static const regex kOtherInFront(
       R"(\b(?:the|a|an|another|some)\s+(?:other\s+)?[a-z-]+\s+(?:[\w-]+\s+){0,5}?in front of (?:him|her|me|them|us)\b)");
-  const string t = std::regex_replace(text, kOtherInFront, " ");
+  // Nor is what the driver believed another vehicle would do: "she thought
+  // v1 was going to turn onto carver road and she began a left turn".
+  static const regex kBeliefOfOther(
+      R"(\b(?:thought|believed|assumed|expected|figured)\s+(?:that\s+)?(?:v[1-9]|the\s+other\s+(?:car|vehicle|driver|truck|van))\b[^,.;]*?(?=,|\b(?:and|but|so)\s+(?:then\s+)?(?:he|she|i)\b|$))");
+  const string t = std::regex_replace(std::regex_replace(text, kOtherInFront, " "), kBeliefOfOther, " ");
   static const regex kStopState(
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(

@@ -2548,6 +2548,16 @@ TEST(NarrativeExtractorTest, TheCaseVehicleOnceNumberedAndMovesOnlyMeant) {
   ASSERT_EQ(before.vehicles.size(), 2u);
   EXPECT_EQ(before.vehicles[1].pre_event.value, Movement::kStraight);
   EXPECT_EQ(before.crash.type.value, CrashType::kRearEnd);
+  // What she believed the other would do is not her own intent: "she thought
+  // V1 was going to turn onto Carver Road and she began a left turn".
+  const AccidentRecord belief = kExtractor.Extract(
+      "V1 was driving south on Harrison Avenue. V2 was eastbound on Carver Road and was stopped at the stop sign "
+      "where Carver Road forms a T-intersection with Harrison Avenue. The 16-year-old driver of V2 stated that she "
+      "thought V1 was going to turn onto Carver Road and she began a left turn to go north. The front of V2 struck "
+      "the right side of V1.");
+  ASSERT_EQ(belief.vehicles.size(), 2u);
+  EXPECT_EQ(belief.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(belief.crash.type.value, CrashType::kTurnIntoPath);
   // One that spun across the centerline and was broadsided by an oncoming
   // vehicle is in the opposite-direction group, not an angle crash.
   const AccidentRecord spun = kExtractor.Extract(
