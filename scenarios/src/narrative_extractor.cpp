@@ -2417,8 +2417,25 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (!best->axis && rs.axis && v1_axis >= 0 && *rs.axis != v1_axis) continue;  // a road across V1's course
         if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
         if (OfAnotherRoad(rs, *best)) continue;
+        // ... or one whose own noun names another road than best's clause
+        // ("the boulevard had 2 lanes each way. ... a 2-lane residential
+        // street", best the boulevard's).
+        if (!rs.counted.empty() && !GenericRoad(rs.counted) && rs.road.empty() && !best->road.empty() &&
+            !GenericRoad(best->road) && rs.counted.find(best->road) == string::npos &&
+            best->road.find(rs.counted) == string::npos) {
+          continue;
+        }
         if (!total && rs.total) total = rs.total;
         if (!per && rs.per_direction) per = rs.per_direction;
+        // A road that widens at the junction is coded by its lanes there:
+        // "each side widened to include a left-turn lane, for a total of 3
+        // lanes in each direction at the intersection".
+        static const regex kWidened(R"(\b(?:widen\w*|flare\w*|for a total of)\b)");
+        const string& widened_text = sentences[rs.sentence].text;
+        if (rs.per_direction > per && rs.sentence != best->sentence &&
+            Has(widened_text.substr(0, std::min(widened_text.size(), rs.pos + 40)), kWidened)) {
+          per = rs.per_direction;
+        }
         if (rs.directional && (!directional || (!v1s_direction && of_v1s_direction(rs)))) {
           directional = rs.directional;
           v1s_direction = of_v1s_direction(rs);
@@ -2513,8 +2530,14 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         counted = true;
         // The same road: on the same axis, or near it with no axis to tell,
         // and not another road by name.
+        // (Named by kinds that differ: "the highway had 2 lanes in each
+        // direction separated by a grass median", best the county road's.)
+        const bool other_kind = !rs.road.empty() && !best->road.empty() && !GenericRoad(rs.road) &&
+                                !GenericRoad(best->road) && rs.road.find(best->road) == string::npos &&
+                                best->road.find(rs.road) == string::npos;
         const bool same = (rs.axis && best->axis) ? *rs.axis == *best->axis
-                                                  : rs.sentence <= best->sentence + 1 && !OfAnotherRoad(rs, *best);
+                                                  : rs.sentence <= best->sentence + 1 && !OfAnotherRoad(rs, *best) &&
+                                                        !other_kind;
         if (same) return false;
       }
       return counted;

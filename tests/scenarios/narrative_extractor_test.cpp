@@ -2969,5 +2969,35 @@ TEST(NarrativeExtractorTest, ApproachesToldByTheirTurnLanes) {
             3);
 }
 
+TEST(NarrativeExtractorTest, ARoadWideningAtTheJunctionAndAMedianOfTheOtherRoad) {
+  // "widened to include a left-turn-only lane ..., for a total of three
+  // lanes in each direction at the intersection": coded by its lanes there,
+  // and the residential street's two lanes are not the boulevard's.
+  const RoadRecord widened =
+      kExtractor
+          .Extract("V1 was traveling westbound on a divided boulevard. The boulevard had two through lanes in each "
+                   "direction separated by a raised grass median; at the signalized intersection with a two-lane "
+                   "residential street, each side of the boulevard widened to include a left-turn-only lane cut "
+                   "into the median, for a total of three lanes in each direction at the intersection. V1 was "
+                   "stopped in the westbound left-turn lane. V2 was traveling eastbound on the boulevard. V1 began "
+                   "its turn and the front of V2 contacted the right side of V1.")
+          .road;
+  EXPECT_TRUE(widened.divided.value);
+  EXPECT_EQ(widened.lanes_per_direction.value, 3);
+  EXPECT_EQ(widened.lanes_total.value, 6);
+  // "The highway had two lanes in each direction separated by a grass
+  // median", V1 on the county road: the median is the highway's.
+  const RoadRecord county =
+      kExtractor
+          .Extract("The crash occurred in the westbound lanes of a four-lane divided highway at a T-intersection with "
+                   "a county road. The highway had two lanes in each direction separated by a grass median. The "
+                   "county road was a two-lane roadway that ended at the highway from the north. V1 was traveling "
+                   "south on the county road. V2 was traveling west in the left lane. V1 pulled out and the front "
+                   "of V2 struck the left side of V1.")
+          .road;
+  EXPECT_FALSE(county.divided.value);
+  EXPECT_EQ(county.lanes_total.value, 2);
+}
+
 }  // namespace
 }  // namespace accsim
