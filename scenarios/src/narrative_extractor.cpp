@@ -2263,6 +2263,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           ++items;
           last_end = pos + static_cast<size_t>(it->length());
         }
+        // "... separated by a continuous center 2-way left turn lane": the
+        // centre lane is one more.
+        static const regex kCentreAfterList(
+            R"(^\s*,?\s*(?:separated|divided)\s+by\s+(?:a|an)\s+(?:continuous\s+|shared\s+|painted\s+)*(?:center|centre|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|^\s*,?\s*(?:separated|divided)\s+by\s+(?:a|an)\s+(?:continuous\s+)?2[- ]way\s+left[- ]turn\s+lane\b)");
+        if (items >= 2 && Has(s.text.substr(last_end, 80), kCentreAfterList)) ++sum;
         if (items >= 2) add(lm, first, sum, 0, 0);
       }
     }

@@ -2999,5 +2999,24 @@ TEST(NarrativeExtractorTest, ARoadWideningAtTheJunctionAndAMedianOfTheOtherRoad)
   EXPECT_EQ(county.lanes_total.value, 2);
 }
 
+TEST(NarrativeExtractorTest, ACentreLaneAfterTheListedLanes) {
+  // "two northbound lanes and two southbound lanes separated by a continuous
+  // center two-way left turn lane": five.
+  EXPECT_EQ(kExtractor
+                .Extract("V2 was traveling northbound on a roadway, intending to turn left into a driveway. The "
+                         "roadway consisted of two northbound lanes and two southbound lanes separated by a "
+                         "continuous center two-way left turn lane. V1 was traveling southbound in the inside lane. "
+                         "V2 began its turn and the front of V1 contacted the right side of V2.")
+                .road.lanes_total.value,
+            5);
+  // "... separated by a raised median": no lane.
+  EXPECT_EQ(kExtractor
+                .Extract("V1 was traveling northbound on a roadway. The roadway consisted of two northbound lanes and "
+                         "two southbound lanes separated by a raised median. V2 was traveling southbound. V1 turned "
+                         "left and the front of V2 struck the right side of V1.")
+                .road.lanes_total.value,
+            4);
+}
+
 }  // namespace
 }  // namespace accsim
