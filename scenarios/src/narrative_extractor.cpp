@@ -2393,6 +2393,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // Combine statements about the same road (a total in one sentence, the
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
+      const RoadStatement* per_told = best;  // the statement `per` comes from
       // A count of V1's own direction ("giving 3 westbound lanes", V1
       // westbound) is its lanes, before one of the other direction's or an
       // each-way count.
@@ -2431,7 +2432,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
           continue;
         }
         if (!total && rs.total) total = rs.total;
-        if (!per && rs.per_direction) per = rs.per_direction;
+        if (!per && rs.per_direction) {
+          per = rs.per_direction;
+          per_told = &rs;
+        }
         // A road that widens at the junction is coded by its lanes there:
         // "each side widened to include a left-turn lane, for a total of 3
         // lanes in each direction at the intersection".
@@ -2440,6 +2444,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         if (rs.per_direction > per && rs.sentence != best->sentence &&
             Has(widened_text.substr(0, std::min(widened_text.size(), rs.pos + 40)), kWidened)) {
           per = rs.per_direction;
+          per_told = &rs;
         }
         if (rs.directional && (!directional || (!v1s_direction && of_v1s_direction(rs)))) {
           directional = rs.directional;
@@ -2490,6 +2495,19 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             directional = per + 1;
             v1s_direction = true;
           }
+        }
+        // "..., and a left-turn bay was cut into the median on each approach
+        // to the signalized intersection": each side has the bay there.
+        static const regex kBayOnEachApproach(
+            R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,60}?\b(?:on|at|for)\s+(?:each|both|every)\s+(?:approach|approaches|leg|legs)\b)");
+        const bool at_junction_here =
+            r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
+        const string& told = sentences[per_told->sentence].text;
+        if (!v1s_direction && !per_told->centre && at_junction_here &&
+            std::regex_search(told.cbegin() + static_cast<std::ptrdiff_t>(std::min(per_told->pos, told.size())),
+                              told.cend(), bm, kBayOnEachApproach)) {
+          per += 1;
+          total = 2 * per;
         }
         r.road.lanes_per_direction.Set(v1s_direction ? directional : per, Provenance::kStated);
         if (v1s_direction && total < directional + per) {

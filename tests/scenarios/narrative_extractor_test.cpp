@@ -2999,7 +2999,7 @@ TEST(NarrativeExtractorTest, ARoadWideningAtTheJunctionAndAMedianOfTheOtherRoad)
   EXPECT_EQ(county.lanes_total.value, 2);
 }
 
-TEST(NarrativeExtractorTest, ACentreLaneAfterTheListedLanes) {
+TEST(NarrativeExtractorTest, CentreLanesAndBaysToldAfterTheThroughLanes) {
   // "two northbound lanes and two southbound lanes separated by a continuous
   // center two-way left turn lane": five.
   EXPECT_EQ(kExtractor
@@ -3016,6 +3016,18 @@ TEST(NarrativeExtractorTest, ACentreLaneAfterTheListedLanes) {
                          "left and the front of V2 struck the right side of V1.")
                 .road.lanes_total.value,
             4);
+  // "..., and a left-turn bay was cut into the median on each approach to
+  // the signalized intersection": three lanes on each side there.
+  const RoadRecord bays =
+      kExtractor
+          .Extract("V1 was traveling southbound on a four-lane divided roadway. The north/south roadway had two lanes "
+                   "in each direction separated by a landscaped median, and a left-turn bay was cut into the median "
+                   "on each approach to the signalized intersection with an east/west roadway. V1 entered the "
+                   "southbound left-turn bay and turned left. V2 was traveling northbound. The front of V2 contacted "
+                   "the right side of V1.")
+          .road;
+  EXPECT_EQ(bays.lanes_per_direction.value, 3);
+  EXPECT_EQ(bays.lanes_total.value, 6);
 }
 
 }  // namespace
