@@ -1000,7 +1000,7 @@ std::optional<double> TypicalLimitMph(const string& scene, int lanes_total, bool
 // "side street", "county road", "highway", "stem".
 const string& RoadNoun() {
   static const string kNoun =
-      R"(((?:(?:county|state|rural|city|residential|local|minor|secondary|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|parkway|turnpike|route|arterial|collector|stem|freeway|interstate|expressway)))";
+      R"(((?:(?:county|state|rural|city|residential|local|minor|secondary|through|collector|main|frontage|side|cross|access|service)\s+)?(?:road|roadway|street|highway|avenue|boulevard|parkway|turnpike|route|arterial|collector|stem|freeway|interstate|expressway|crossroad)))";
   return kNoun;
 }
 
@@ -2566,7 +2566,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       return counted;
     };
     // "a median crossover", "stopped in the median": the other road's median.
-    static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
+    static const regex kMedianPlace(R"(\b(?:in|into|across|through|onto|at|from|out of) the median\b|\bmedian (?:crossover|opening|crossing)\b)");
     // Whether a sentence (its median places blanked) says `word` of V1's
     // road: not of a road across V1's course at a junction, judged by the
     // axis of the phrase that says it ("a north/south divided highway and an
@@ -2577,7 +2577,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       const size_t at = static_cast<size_t>(dm.position());
       // "a 2-lane county road crosses a divided highway", V1 on the county
       // road: the word names another kind of road.
-      static const regex kQualifiedRoad(R"(^(?:county|state|rural|city|residential|side|cross|access|service|frontage)\s)");
+      static const regex kQualifiedRoad(
+          R"(^(?:county|state|rural|city|residential|side|cross|access|service|frontage)\s|^crossroad$)");
       if (distinctive && Has(v1_road, kQualifiedRoad)) {
         static const regex kNounAfter(R"(^\s*(?:[\w-]+\s+){0,2}?)" + RoadNoun() + R"(\b)");
         // (The word may hold its noun: "of a 6-lane, divided, limited access
@@ -2817,8 +2818,10 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
             R"(^\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:on|for|along)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
             R"(\b)");
         // ... or just before it: "and on the side road 48 kmh".
-        static const regex kOnRoadNounBefore(R"(\b(?:on|for|along)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" + RoadNoun() +
-                                             R"(\s*,?\s*$)");
+        // (Also in an ellipsis: "the highway was posted at 89 kmh and the
+        // crossroad at 56 kmh".)
+        static const regex kOnRoadNounBefore(R"(\b(?:on|for|along|and)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" +
+                                             RoadNoun() + R"(\s*(?:,\s*|\s+at\s+)?$)");
         // ... or posted itself: "meets a 4-lane undivided arterial posted at 64 kmh".
         static const regex kRoadPostedAt(R"(\b)" + RoadNoun() +
                                          R"(\s+(?:that was |which was |was |is )?(?:posted|signed|zoned)\s+(?:at|for)\s+$)");

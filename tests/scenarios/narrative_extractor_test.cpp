@@ -3030,5 +3030,23 @@ TEST(NarrativeExtractorTest, CentreLanesAndBaysToldAfterTheThroughLanes) {
   EXPECT_EQ(bays.lanes_total.value, 6);
 }
 
+TEST(NarrativeExtractorTest, ACrossroadHasItsOwnLimitAndNoMedian) {
+  const std::string scene =
+      "This crash occurred at a four-leg intersection where a two-lane crossroad crossed a divided highway. The "
+      "crossroad had one lane in each direction and was controlled by stop signs. The highway was posted at 89 km/h "
+      "and the crossroad at 56 km/h. V1 was traveling north on the crossroad. V1 stopped at the stop sign and then "
+      "began turning left. V2 was traveling west in the right lane. The front of V2 struck the right side of V1. ";
+  const AccidentRecord r = kExtractor.Extract(scene);
+  // "and the crossroad at 56 km/h": the limit's road in an ellipsis.
+  EXPECT_NEAR(r.road.speed_limit_mps.value / 0.44704, 35.0, 0.5);
+  // "a two-lane crossroad crossed a divided highway": the highway's median.
+  EXPECT_FALSE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  // "saw the Mercedes pull out of the median": where V1 was, not V1's road.
+  const AccidentRecord seen = kExtractor.Extract(
+      scene + "The driver of V2 stated that he saw the Mercedes pull out of the median and braked.");
+  EXPECT_FALSE(seen.road.divided.value);
+}
+
 }  // namespace
 }  // namespace accsim
