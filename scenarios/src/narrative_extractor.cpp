@@ -2020,7 +2020,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
     const bool v1_at_sign = std::any_of(segments.begin(), segments.end(),
                                         [&](const Segment& seg) { return v1_before_impact(seg) && Has(seg.text, kAtTheSign); });
     static const regex kSignControls(
-        R"(\b(?:controlled by|had|has|with|faced)\s+(?:a\s+)?stop signs?\b|\bstop[- ]sign[- ]controlled\b)");
+        R"(\b(?:controlled by|had|has|with|faced)\s+(?:a\s+)?(?:posted\s+|single\s+|standard\s+)?stop signs?\b|\bstop[- ]sign[- ]controlled\b)");
     std::set<string> signed_roads;
     for (const Sentence& s : sentences) {
       if (!v1_at_sign || s.kind != Kind::kNarrative || !s.refs.empty()) continue;

@@ -2256,6 +2256,15 @@ TEST(NarrativeExtractorTest, ATelegraphicLimitListGoesOnAfterASemicolon) {
                        "turn. V2 (2002 Chevrolet Trailblazer) was southbound on the highway. The front of V2 struck "
                        "the left side of V1."),
               25.0, 0.5);
+  // "The residential street is controlled by a posted stop sign", V1
+  // stopped at it: V1's road is the residential street, and its limit.
+  EXPECT_NEAR(LimitMph("A two way, two lane residential street ends at a two way, two lane collector roadway. The "
+                       "residential street is controlled by a posted stop sign for southbound traffic. The speed "
+                       "limit on the collector roadway is posted 72 kmph (45 mph). The speed limit on the "
+                       "residential street is posted 48 kmph (30 mph). V1 was traveling southbound and stopped at "
+                       "the stop sign, intending to turn left. V2 was traveling westbound. V1 pulled out and the "
+                       "front of V2 struck the left side of V1."),
+              30.0, 0.5);
   // A speed in the next sentence is no limit: "the car 60 km/h" follows no
   // road noun.
   EXPECT_NEAR(LimitMph("V1 was northbound on a two-lane highway posted 72 km/h (45 mph); the driver estimated 60 "
