@@ -74,6 +74,9 @@ string Normalise(std::string_view in) {
   static const regex kKmh(R"(\bkm\s*/\s*hr?\b|\bkph\b|\bkmph\b|\bkm/h\b|\bkilometers per hour\b|\bkilometres per hour\b|\bkm per hour\b)");
   static const regex kOneWay(R"(\bone[- ]way\b)");
   static const regex kNonContact(R"(\bnon[- ]?contact\b)");
+  // "40kph (25mph)": a unit written onto its number.
+  static const regex kUnitOnNumber(R"((\d)(kph|kmph|kmh|km/hr?|mph)\b)");
+  s = std::regex_replace(s, kUnitOnNumber, "$1 $2");
   s = std::regex_replace(s, kMph, "mph");
   s = std::regex_replace(s, kKmh, "kmh");
   s = std::regex_replace(s, kOneWay, "oneway");

@@ -1407,6 +1407,13 @@ TEST(NarrativeExtractorTest, LimitSynonymsAndSingularMiles) {
     EXPECT_NEAR(r.road.speed_limit_mps.value, 45 * 0.44704, 1e-6) << limit;
     EXPECT_TRUE(r.road.speed_limit_mps.known()) << limit;
   }
+  // "40kph (25mph) on the residential street": the unit written onto the
+  // number, and the road after the conversion.
+  EXPECT_NEAR(LimitMph("A two-lane residential street ends at a four-lane east/west roadway. The posted speed limit "
+                       "was 40kph (25mph) on the residential street and 56kph (35mph) on the east/west roadway. V1 "
+                       "was traveling south on the residential street and turned right. V2 was traveling west. The "
+                       "front of V2 struck the back of V1."),
+              25.0, 0.5);
 }
 
 TEST(NarrativeExtractorTest, MakeNamedDriverSentencesAndUnnumberedTrucksKeepTheirVehicle) {
