@@ -2041,10 +2041,18 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   }
   const bool distinctive = !v1_road.empty() && !GenericRoad(v1_road);
   // Which vehicle's segment a position in a sentence belongs to.
+  // A coordinated subject ("v1 and v2 were both traveling northbound on a
+  // 3-lane oneway roadway") is V1's when it names V1.
   auto owner_at = [&](const Sentence& s, size_t pos) {
     int owner = 0;
+    size_t last_end = 0;
+    bool coordinated = false;
+    static const regex kAnd(R"(^\s*(?:,\s*)?and\s*$)");
     for (const Ref& ref : s.refs) {
-      if (ref.pos <= pos) owner = ref.vehicle;
+      if (ref.pos > pos) break;
+      coordinated = owner > 0 && ref.pos >= last_end && Has(s.text.substr(last_end, ref.pos - last_end), kAnd);
+      owner = coordinated ? std::min(owner, ref.vehicle) : ref.vehicle;
+      last_end = ref.pos + 2;  // "v1"
     }
     return owner;
   };

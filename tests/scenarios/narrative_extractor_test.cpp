@@ -3046,6 +3046,20 @@ TEST(NarrativeExtractorTest, CentreLanesAndBaysToldAfterTheThroughLanes) {
   EXPECT_EQ(bays.lanes_total.value, 6);
 }
 
+TEST(NarrativeExtractorTest, ACoordinatedSubjectsRoadIsV1s) {
+  // "V1 and V2 were both traveling northbound on a three-lane one-way
+  // roadway": V1's road too.
+  const RoadRecord both =
+      kExtractor
+          .Extract("The crash occurred at a four-leg intersection. V1 and V2 were both traveling northbound on a "
+                   "three-lane one-way roadway. The intersecting roadway was a two-lane, two-way street. V1 was in "
+                   "lane #1. V2 was in lane #2 and turned right in front of V1. The front of V1 struck the right side "
+                   "of V2.")
+          .road;
+  EXPECT_TRUE(both.one_way.value);
+  EXPECT_EQ(both.lanes_total.value, 3);
+}
+
 TEST(NarrativeExtractorTest, ACrossroadHasItsOwnLimitAndNoMedian) {
   const std::string scene =
       "This crash occurred at a four-leg intersection where a two-lane crossroad crossed a divided highway. The "
