@@ -2405,6 +2405,8 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
       const RoadStatement* per_told = best;  // the statement `per` comes from
+      const bool at_junction_here =
+          r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
       // A count of V1's own direction ("giving 3 westbound lanes", V1
       // westbound) is its lanes, before one of the other direction's or an
       // each-way count.
@@ -2511,8 +2513,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // to the signalized intersection": each side has the bay there.
         static const regex kBayOnEachApproach(
             R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,60}?\b(?:on|at|for)\s+(?:each|both|every)\s+(?:approach|approaches|leg|legs)\b)");
-        const bool at_junction_here =
-            r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
         const string& told = sentences[per_told->sentence].text;
         if (!v1s_direction && !per_told->centre && at_junction_here &&
             std::regex_search(told.cbegin() + static_cast<std::ptrdiff_t>(std::min(per_told->pos, told.size())),
@@ -2531,8 +2531,16 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         r.road.lanes_per_direction.Set(1, Provenance::kStated);
         r.road.lanes_total.Set(2, Provenance::kInferred);
       } else if (total) {
-        r.road.lanes_total.Set(total, Provenance::kStated);
-        r.road.lanes_per_direction.Set(directional ? directional : std::max(1, total / 2),
+        // "2 northbound and 2 southbound through lanes separated by a
+        // raised grass median, with a left turn lane in the median for each
+        // direction": each side has the bay at the junction.
+        static const regex kBayForEachDirection(
+            R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,40}?\b(?:for|in)\s+(?:each|both|either)\s+directions?\b)");
+        const string& told = sentences[best->sentence].text;
+        const bool bays = directional && at_junction_here && !best->centre &&
+                          Has(told.substr(std::min(best->pos, told.size())), kBayForEachDirection);
+        r.road.lanes_total.Set(bays ? total + 2 : total, Provenance::kStated);
+        r.road.lanes_per_direction.Set(directional ? directional + (bays ? 1 : 0) : std::max(1, total / 2),
                                        directional ? Provenance::kStated : Provenance::kInferred);
       } else if (directional) {
         r.road.lanes_per_direction.Set(directional, Provenance::kStated);

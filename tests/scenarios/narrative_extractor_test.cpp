@@ -3044,6 +3044,17 @@ TEST(NarrativeExtractorTest, CentreLanesAndBaysToldAfterTheThroughLanes) {
           .road;
   EXPECT_EQ(bays.lanes_per_direction.value, 3);
   EXPECT_EQ(bays.lanes_total.value, 6);
+  // "..., with a left turn lane in the median for each direction".
+  const RoadRecord each =
+      kExtractor
+          .Extract("The crash occurred at a four-leg intersection on a divided highway. The highway consists of two "
+                   "northbound and two southbound through lanes separated by a raised grass median, with a left "
+                   "turn lane in the median for each direction. V1 was stopped in the northbound left turn lane "
+                   "waiting to turn left. V2 was traveling southbound. V1 began the turn and the front of V2 struck "
+                   "the right side of V1.")
+          .road;
+  EXPECT_EQ(each.lanes_per_direction.value, 3);
+  EXPECT_EQ(each.lanes_total.value, 6);
 }
 
 TEST(NarrativeExtractorTest, ACoordinatedSubjectsRoadIsV1s) {
