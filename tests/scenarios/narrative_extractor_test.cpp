@@ -3089,5 +3089,22 @@ TEST(NarrativeExtractorTest, ACrossroadHasItsOwnLimitAndNoMedian) {
   EXPECT_FALSE(seen.road.divided.value);
 }
 
+TEST(NarrativeExtractorTest, AnOncomingVehicleOverTheLineIntoARightTurnerIsNoTurnAcrossPath) {
+  const std::string scene =
+      "The crash occurred in the westbound lane of a two-lane roadway near a T-intersection. V1 was traveling "
+      "eastbound negotiating the curve. V2 was traveling westbound and slowing to turn right onto the side road. V1 "
+      "crossed over the double yellow centerline and the left front of V1 struck the left side of V2 in the westbound "
+      "lane. The Critical Precrash Event for V1 was this vehicle traveling over the lane line on the left side of the "
+      "travel lane. The Critical Precrash Event for V2 was other vehicle encroachment from the opposite direction "
+      "over the left lane line.";
+  const AccidentRecord r = kExtractor.Extract(scene);
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeOpposite);
+  // Turning left, it is.
+  std::string left = scene;
+  left.replace(left.find("turn right"), 10, "turn left");
+  EXPECT_EQ(kExtractor.Extract(left).crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 }  // namespace
 }  // namespace accsim
