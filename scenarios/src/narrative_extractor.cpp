@@ -465,6 +465,9 @@ VehicleClass ClassOf(const string& d) {
 string WithoutDistantJunctions(const string& s) {
   static const regex kDistant(
       R"(\b\d+\s*(?:ft|feet|foot|m|meters?|metres?|yards?|yds?|miles?)\s+(?:north|south|east|west|before|after|past|beyond|short)\s+(?:of\s+|from\s+)?(?:the\s+|an?\s+)?(?:next\s+|nearest\s+)?(?:cross street|intersection|junction)\b|\b(?:halfway\s+|midway\s+)?between\s+(?:the\s+)?(?:2|two)\s+(?:cross streets|intersections|junctions)\b|\b(?:at|for|toward|towards|approaching|to|before)\s+the\s+next\s+(?:\w+\s+)?(?:intersection|junction|cross street)\b|\b(?:away from|not near|nowhere near|far from)\s+(?:any|an?|the)\s+[^.;,]{0,40})"
+      // "there was no intersection or traffic control device at the crash
+      // location", "not at an intersection".
+      R"(|\b(?:no|not at an?|not at the|not within an?)\s+(?:intersection|junction|cross street)s?\b[^.;]{0,50})"
       // "the nearest ramp was about 700 meters away".
       // "having entered by way of an exit ramp approximately 5 km to the east".
       R"(|\b(?:ramp|interchange)\s+(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:km|kilometers?|kilometres?|mi|miles?|m|meters?|metres?|ft|feet)\b[^.;]{0,25}|)"

@@ -2914,6 +2914,14 @@ TEST(NarrativeExtractorTest, WhereCrashesHappenAtAccessesRampsAndCrossovers) {
       "County Road 7 and stopped at the stop sign. V2 was eastbound. The front of V2 struck the left side of V1.";
   EXPECT_EQ(location(crossing), CrashLocation::kJunction);
   EXPECT_NEAR(LimitMph(crossing), 35.0, 0.5);
+  // "There was no intersection or traffic control device at the crash
+  // location": a U-turn on the segment.
+  EXPECT_EQ(location("The crash occurred on the northbound lanes of a two-way roadway with two lanes in each "
+                     "direction. There was no intersection or traffic control device at the crash location. V1 was "
+                     "traveling northbound in the right lane. V2 was traveling northbound in the left lane. V1 "
+                     "attempted to make a U-turn from the right lane, and the front of V2 impacted the left side of "
+                     "V1."),
+            CrashLocation::kSegment);
   // The intersection an exit ramp ends at is not where a crash in its loop was.
   EXPECT_EQ(location("The crash occurred on a 1-lane exit ramp that curves to the right and ends at a signalized "
                      "intersection. Traffic was backed up on the ramp. V2 was slowing on the ramp. V1 was behind V2. "
