@@ -1558,9 +1558,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   // What a driver saw another vehicle do ("she saw v1 waiting to turn") is
   // about that vehicle, but the sentence stays the observer's.
   static const regex kPerceivedBefore(
-      R"(\b(?:saw|seen|see|seeing|observed|noticed|notice|watched|realize|realized|recognize|recognized)\s*(?:that\s+)?$)");
+      R"(\b(?:saw|seen|see|seeing|observed|noticed|notice|watched|realize|realized|recognize|recognized|looked (?:back|up|again|ahead|forward))\s*(?:that\s+)?$)");
   static const regex kPerceivedState(
-      R"(^\s+(?:was\s+|had\s+)?(?:stopped|stationary|waiting|sitting|turning|making|pulling|backing|slowing|traveling|travelling|approaching|coming|entering|exiting|changing)\b)");
+      R"(^\s+(?:was\s+|had\s+)?(?:stopped|stationary|waiting|sitting|turning|making|pulling|backing|slowing|traveling|travelling|approaching|coming|entering|exiting|changing)\b|^\s+had\s+(?:already\s+|suddenly\s+)?slowed\b)");
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(

@@ -3114,5 +3114,15 @@ TEST(NarrativeExtractorTest, AnOncomingVehicleOverTheLineIntoARightTurnerIsNoTur
   EXPECT_EQ(kExtractor.Extract(left).crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, WhatTheDriverSawOnLookingBackIsTheOthers) {
+  // "when he looked back V2 had slowed": V2's slowing, not V1's.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling northbound in the left lane. V2 was traveling northbound in the left lane ahead of V1. The "
+      "front of V1 struck the back of V2. The driver of V1 stated that he was traveling about 55 mph and looked over "
+      "at a disabled vehicle on the shoulder, and when he looked back V2 had slowed. He braked hard.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
+
 }  // namespace
 }  // namespace accsim
