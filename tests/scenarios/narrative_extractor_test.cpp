@@ -3117,9 +3117,11 @@ TEST(NarrativeExtractorTest, AnOncomingVehicleOverTheLineIntoARightTurnerIsNoTur
 TEST(NarrativeExtractorTest, WhatTheDriverSawOnLookingBackIsTheOthers) {
   // "when he looked back V2 had slowed": V2's slowing, not V1's.
   const AccidentRecord r = kExtractor.Extract(
-      "V1 was traveling northbound in the left lane. V2 was traveling northbound in the left lane ahead of V1. The "
-      "front of V1 struck the back of V2. The driver of V1 stated that he was traveling about 55 mph and looked over "
-      "at a disabled vehicle on the shoulder, and when he looked back V2 had slowed. He braked hard.");
+      "V1 was a 2001 Ford Taurus sedan traveling northbound in the left lane. V2, a 1999 Toyota Sienna minivan, was "
+      "traveling northbound in the left lane ahead of V1. V2 slowed with the traffic ahead and the front of V1 struck "
+      "the back of V2. V1 was driven by a 33-year-old male who was not injured. He stated that he was traveling about "
+      "55 mph and looked over at the disabled vehicle on the shoulder, and when he looked back V2 had slowed. He "
+      "braked hard.");
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
 }
