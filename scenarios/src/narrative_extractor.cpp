@@ -648,6 +648,7 @@ struct MovementEvidence {
   bool coded_adjacent = false;  // its critical event: another vehicle from an adjacent lane, same direction
   bool rolled_stop = false, no_stop = false;
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
+  bool green_start = false;  // "when the signal turned green, v1 started its turn": moving off a red (NASS "starting")
   bool stopped_again = false;  // "moved forward ... then stopped again"
   bool u_turn = false;
   bool in_curve = false;  // "entered the right curve at too great a speed"
@@ -811,6 +812,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kStarted(
       R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
   if (Has(t, kStarted)) e.started = true;
+  static const regex kOnGreen(
+      R"(\b(?:when|once|after|as soon as|as)\s+(?:the\s+)?(?:traffic\s+)?(?:light|signal)\s+(?:for\s+[\w ]{1,30}?\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b)");
+  if (Has(t, kOnGreen)) e.green_start = true;
   static const regex kUTurn(R"(\bu-?\s?turn)");
   if (!intention && Has(t, kUTurn)) e.u_turn = true;
 }
@@ -891,7 +895,10 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     const bool stopped = n.stopped || n.stop_cancelled || st.stopped || st.stop_cancelled;
     // "did not stop before making the turn": slowed for it.
     const bool rolled = n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop;
-    if (stopped && !rolled) d.pre_event = Movement::kStopped;
+    // Moving off a red when it turned green is NASS "starting in traffic
+    // lane", coded here as going on.
+    if (stopped && n.green_start) d.pre_event = Movement::kStraight;
+    else if (stopped && !rolled) d.pre_event = Movement::kStopped;
     // A U-turn is its own pre-event movement (NASS "making a U-turn").
     else if (n.u_turn || st.u_turn) d.pre_event = Movement::kTurnLeft;
     else if (rolled) d.pre_event = Movement::kSlowing;
@@ -906,7 +913,7 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // decelerating" to a stop was going straight (crossing/23, straight/17).
   const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant;
   if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
-  if (e.stopped && (!e.started || e.stopped_again)) return both(Movement::kStopped, Provenance::kStated);
+  if (e.stopped && (!(e.started || n.green_start) || e.stopped_again)) return both(Movement::kStopped, Provenance::kStated);
   // A lane change that is itself the vehicle's coded critical event ("this
   // vehicle traveling over the lane line") was preceded by driving on:
   // NASS codes that as the pre-event movement, as for turns.

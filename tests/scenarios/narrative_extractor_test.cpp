@@ -3126,5 +3126,26 @@ TEST(NarrativeExtractorTest, WhatTheDriverSawOnLookingBackIsTheOthers) {
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, MovingOffARedWhenItTurnedGreenIsStarting) {
+  // NASS "starting in traffic lane", coded as going on; a stop at a sign
+  // before the turn stays a stop.
+  const std::string signal =
+      "Vehicle #2 was traveling east on the street and was stopped at the red signal, intending to turn left. When the "
+      "signal turned green for Vehicle #2, it started its left turn. Vehicle #1 was traveling west. The front of "
+      "Vehicle #1 struck the right side of Vehicle #2.";
+  EXPECT_EQ(PreEventOf(signal, 2, 1), Movement::kStraight);
+  EXPECT_EQ(kExtractor.Extract(signal).vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(PreEventOf("Vehicle #2 was traveling east and was stopped at the red light. When the light turned green "
+                       "it proceeded into the intersection. Vehicle #1 entered the intersection against the red light "
+                       "and impacted the left side of Vehicle #2 with its front.",
+                       2, 1),
+            Movement::kStraight);
+  EXPECT_EQ(PreEventOf("Vehicle #2 was traveling east on the street and stopped at the stop sign, intending to turn "
+                       "left. Vehicle #2 then started its left turn. Vehicle #1 was traveling west. The front of "
+                       "Vehicle #1 struck the right side of Vehicle #2.",
+                       2, 1),
+            Movement::kStopped);
+}
+
 }  // namespace
 }  // namespace accsim
