@@ -913,7 +913,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // decelerating" to a stop was going straight (crossing/23, straight/17).
   const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant;
   if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
-  if (e.stopped && (!(e.started || n.green_start) || e.stopped_again)) return both(Movement::kStopped, Provenance::kStated);
+  if (e.stopped && (!(e.started || n.green_start) || e.stopped_again)) {
+    return both(Movement::kStopped, Provenance::kStated);
+  }
   // A lane change that is itself the vehicle's coded critical event ("this
   // vehicle traveling over the lane line") was preceded by driving on:
   // NASS codes that as the pre-event movement, as for turns.
