@@ -613,6 +613,13 @@ struct RoadStatement {
 // "the road", "the roadway", "the street" name no road in particular.
 bool GenericRoad(const string& road) { return road == "road" || road == "roadway" || road == "street"; }
 
+// Two roads named by kinds that differ ("highway", "county road"), neither
+// generic nor one within the other.
+bool OtherKindsOfRoad(const string& a, const string& b) {
+  return !a.empty() && !b.empty() && !GenericRoad(a) && !GenericRoad(b) && a.find(b) == string::npos &&
+         b.find(a) == string::npos;
+}
+
 // A statement naming another road than the one `best` counts by its own noun
 // ("a six-lane parkway and a two-lane county road. the parkway had 3 lanes
 // each way", `best` the county road's count).
@@ -2063,11 +2070,11 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
   auto owner_at = [&](const Sentence& s, size_t pos) {
     int owner = 0;
     size_t last_end = 0;
-    bool coordinated = false;
     static const regex kAnd(R"(^\s*(?:,\s*)?and\s*$)");
     for (const Ref& ref : s.refs) {
       if (ref.pos > pos) break;
-      coordinated = owner > 0 && ref.pos >= last_end && Has(s.text.substr(last_end, ref.pos - last_end), kAnd);
+      const bool coordinated =
+          owner > 0 && ref.pos >= last_end && Has(s.text.substr(last_end, ref.pos - last_end), kAnd);
       owner = coordinated ? std::min(owner, ref.vehicle) : ref.vehicle;
       last_end = ref.pos + 2;  // "v1"
     }
@@ -2422,8 +2429,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       // split per direction in the next).
       int total = best->total, per = best->per_direction, directional = best->directional;
       const RoadStatement* per_told = best;  // the statement `per` comes from
-      const bool at_junction_here =
-          r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
       // A count of V1's own direction ("giving 3 westbound lanes", V1
       // westbound) is its lanes, before one of the other direction's or an
       // each-way count.
@@ -2456,11 +2461,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // ... or one whose own noun names another road than best's clause
         // ("the boulevard had 2 lanes each way. ... a 2-lane residential
         // street", best the boulevard's).
-        if (!rs.counted.empty() && !GenericRoad(rs.counted) && rs.road.empty() && !best->road.empty() &&
-            !GenericRoad(best->road) && rs.counted.find(best->road) == string::npos &&
-            best->road.find(rs.counted) == string::npos) {
-          continue;
-        }
+        if (rs.road.empty() && OtherKindsOfRoad(rs.counted, best->road)) continue;
         if (!total && rs.total) total = rs.total;
         if (!per && rs.per_direction) {
           per = rs.per_direction;
@@ -2531,7 +2532,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         static const regex kBayOnEachApproach(
             R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,60}?\b(?:on|at|for)\s+(?:each|both|every)\s+(?:approach|approaches|leg|legs)\b)");
         const string& told = sentences[per_told->sentence].text;
-        if (!v1s_direction && !per_told->centre && at_junction_here &&
+        if (!v1s_direction && !per_told->centre && junction &&
             std::regex_search(told.cbegin() + static_cast<std::ptrdiff_t>(std::min(per_told->pos, told.size())),
                               told.cend(), bm, kBayOnEachApproach)) {
           per += 1;
@@ -2554,7 +2555,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         static const regex kBayForEachDirection(
             R"(\b(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,40}?\b(?:for|in)\s+(?:each|both|either)\s+directions?\b)");
         const string& told = sentences[best->sentence].text;
-        const bool bays = directional && at_junction_here && !best->centre &&
+        const bool bays = directional && junction && !best->centre &&
                           Has(told.substr(std::min(best->pos, told.size())), kBayForEachDirection);
         r.road.lanes_total.Set(bays ? total + 2 : total, Provenance::kStated);
         r.road.lanes_per_direction.Set(directional ? directional + (bays ? 1 : 0) : std::max(1, total / 2),
@@ -2577,7 +2578,6 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         R"(\bundivided\b|\bnot (?:physically )?divided\b|\bnon-?divided\b|\b(?:no|without (?:a|any)) (?:\w+ )?median\b)");
     // At a junction, a divided road running across V1's course is the other
     // road ("the through roadway ran east/west and was a divided highway").
-    const bool at_junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
     // A sentence counting the lanes of a road other than V1's says nothing
     // of V1's ("Grand Avenue ... each direction has 3 through lanes plus a
     // left-turn bay next to the raised median", V1 on the 2-lane street).
@@ -2591,12 +2591,9 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
         // and not another road by name.
         // (Named by kinds that differ: "the highway had 2 lanes in each
         // direction separated by a grass median", best the county road's.)
-        const bool other_kind = !rs.road.empty() && !best->road.empty() && !GenericRoad(rs.road) &&
-                                !GenericRoad(best->road) && rs.road.find(best->road) == string::npos &&
-                                best->road.find(rs.road) == string::npos;
         const bool same = (rs.axis && best->axis) ? *rs.axis == *best->axis
                                                   : rs.sentence <= best->sentence + 1 && !OfAnotherRoad(rs, *best) &&
-                                                        !other_kind;
+                                                        !OtherKindsOfRoad(rs.road, best->road);
         if (same) return false;
       }
       return counted;
@@ -2654,7 +2651,7 @@ AccidentRecord NarrativeExtractor::Extract(std::string_view text) const {
       }
       std::optional<int> axis = AxisIn(phrase);
       if (!axis) axis = AxisIn(s.text);
-      return !(at_junction && v1_axis >= 0 && axis && *axis != v1_axis);
+      return !(junction && v1_axis >= 0 && axis && *axis != v1_axis);
     };
     bool divided = false, undivided = false;
     for (const Sentence& s : sentences) {
