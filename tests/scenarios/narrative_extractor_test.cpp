@@ -2254,15 +2254,7 @@ TEST(NarrativeExtractorTest, ALimitAfterItsRoadAndARoadAfterCommas) {
               25.0, 0.5);
 }
 
-TEST(NarrativeExtractorTest, ATelegraphicLimitListGoesOnAfterASemicolon) {
-  // "; side road 40 km/h": the list's second road has its own limit without
-  // the limit word again.
-  EXPECT_NEAR(LimitMph("T-intersection of a two-lane north/south highway and a two-lane road that ends at it from the "
-                       "west. Stop sign for the side road. Highway posted 72 km/h (45 mph); side road 40 km/h (25 "
-                       "mph). V1 (1993 Toyota Camry) stopped at the stop sign on the side road and then began a left "
-                       "turn. V2 (2002 Chevrolet Trailblazer) was southbound on the highway. The front of V2 struck "
-                       "the left side of V1."),
-              25.0, 0.5);
+TEST(NarrativeExtractorTest, TheRoadAPostedStopSignControlsIsTheOneV1StoppedAt) {
   // "The residential street is controlled by a posted stop sign", V1
   // stopped at it: V1's road is the residential street, and its limit.
   EXPECT_NEAR(LimitMph("A two way, two lane residential street ends at a two way, two lane collector roadway. The "
@@ -2272,6 +2264,17 @@ TEST(NarrativeExtractorTest, ATelegraphicLimitListGoesOnAfterASemicolon) {
                        "the stop sign, intending to turn left. V2 was traveling westbound. V1 pulled out and the "
                        "front of V2 struck the left side of V1."),
               30.0, 0.5);
+}
+
+TEST(NarrativeExtractorTest, ATelegraphicLimitListGoesOnAfterASemicolon) {
+  // "; side road 40 km/h": the list's second road has its own limit without
+  // the limit word again.
+  EXPECT_NEAR(LimitMph("T-intersection of a two-lane north/south highway and a two-lane road that ends at it from the "
+                       "west. Stop sign for the side road. Highway posted 72 km/h (45 mph); side road 40 km/h (25 "
+                       "mph). V1 (1993 Toyota Camry) stopped at the stop sign on the side road and then began a left "
+                       "turn. V2 (2002 Chevrolet Trailblazer) was southbound on the highway. The front of V2 struck "
+                       "the left side of V1."),
+              25.0, 0.5);
   // A speed in the next sentence is no limit: "the car 60 km/h" follows no
   // road noun.
   EXPECT_NEAR(LimitMph("V1 was northbound on a two-lane highway posted 72 km/h (45 mph); the driver estimated 60 "
