@@ -1,0 +1,526 @@
+#include "narrative_reading.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "regex_text.h"
+
+namespace accsim::narrative {
+
+using std::regex;
+using std::smatch;
+using std::string;
+
+using regex_text::Has;
+using regex_text::ReplaceWith;
+
+namespace {
+
+// Reads one piece of text about a vehicle for movement statements.
+void ReadMovement(const string& text, MovementEvidence& e) {
+  // What a driver saw another vehicle do is that vehicle's movement: "she
+  // stated ... the car turned right in front of her".
+  static const regex kOtherInFront(
+      R"(\b(?:the|a|an|another|some)\s+(?:other\s+)?[a-z-]+\s+(?:[\w-]+\s+){0,5}?in front of (?:him|her|me|them|us)\b)");
+  // Nor is what the driver believed another vehicle would do: "she thought
+  // v1 was going to turn onto carver road and she began a left turn".
+  static const regex kBeliefOfOther(
+      R"(\b(?:thought|believed|assumed|expected|figured)\s+(?:that\s+)?(?:v[1-9]|the\s+other\s+(?:car|vehicle|driver|truck|van))\b[^,.;]*?(?=,|\b(?:and|but|so)\s+(?:then\s+)?(?:he|she|i)\b|$))");
+  const string t = std::regex_replace(std::regex_replace(text, kOtherInFront, " "), kBeliefOfOther, " ");
+  static const regex kStopState(
+      R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
+  static const regex kStopThenGo(
+      R"(\bstop(?:ped|s)?\b[^.]{0,90}?\b(?:and|then|before)\s+(?:then\s+)?(?:(?:was|had)\s+(?:just\s+)?)?(?:proceed|continu|pull|start|accelerat|drove|enter|went|attempt|tried|began|cross|moving)\w*)");
+  static const regex kParked(R"(\bparked\b|\bunoccupied\b|\b(?:in|from) (?:the|a) (?:\w+ )?parking lane\b)");
+  static const regex kRolledStop(
+      R"(\brolled (?:through|past)\b|\brolling stop\b|\bslowed\b[^.;]{0,60}?\bbut (?:did not|didn't|failed to|never) (?:come to a (?:complete |full )?)?stop\b)");
+  static const regex kNoStop(
+      R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:did not|didn't|failed to|never|without|not)\s+(?:come|coming|came)\s+to\s+a\s+(?:complete\s+|full\s+)?stop\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
+  static const regex kLeavingParking(
+      R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
+  // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
+  static const regex kLeft(
+      R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left\b|\bleft[- ]hand turn|\bleft turn\b|\bturn(?:ed|ing)? left|\b(?:made|make|making)\s+a\s+left\s+(?:onto|into)\b|\bu-?\s?turn|\bcross\w*\s+(?:over\s+)?(?:into|to)\s+(?:a|the)\s+(?:\w+\s+){0,2}?(?:driveway|parking lot|lot|alley)\b)");
+  static const regex kRight(R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?right\b|\bright[- ]hand turn|\bright turn\b|\b(?:made|make|making)\s+a\s+right\s+(?:onto|into)\b)");
+  // An intention is not the movement: "waiting to turn left", "intending to turn".
+  static const regex kIntention(
+      R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn)|)"
+      // "to get into position for a right turn into a plaza".
+      R"(\bfor (?:a|an|the|his|her|its) (?:[\w-]+ )?(?:left|right) turn\b)");
+  static const regex kLaneChange(
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+  static const regex kMerge(
+      R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
+  // "traffic was backed up" is a queue, not a vehicle reversing.
+  static const regex kBack(
+      R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
+  static const regex kPass(
+      R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
+  static const regex kSlow(
+      R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|)"
+      // "was westbound in lane two, slowing from about 50 mph".
+      R"(,\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
+  static const regex kStraight(
+      R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
+  // "... impacted the left side of a legally parked and unoccupied van": the
+  // parked thing is what the vehicle struck, not the vehicle itself; nor is
+  // one it saw ("could see past the parked truck").
+  static const regex kParkedObject(
+      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+\s+)?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b|\bparked\s+(?:cars|trucks|vans|vehicles)\b)");
+  const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);
+  if (parked && !Has(t, kLeavingParking)) e.parked = true;
+  if (Has(t, kLeavingParking)) e.leaving_parking = true;
+  if (Has(t, kRolledStop)) e.rolled_stop = true;
+  if (Has(t, kNoStop)) e.no_stop = true;
+  // A stop made on seeing the other vehicle is the avoidance, after the
+  // critical event: "when he saw the other car coming, he stopped".
+  static const regex kAvoidanceStop(R"(\b(?:saw|seeing|noticed|observed|spotted)\b[^.]{0,80}?\b(?:stopped|braked to a stop)\b)");
+  // "was almost stopped when he was hit" is no stop.
+  static const regex kAlmostStopped(
+      R"(\b(?:almost|nearly|virtually|practically)\s+(?:stopped|at a stop|to a stop|come to a stop|came to a stop)\b)");
+  // Nor is "to go around the stopped vehicle": a stopped thing it passed.
+  static const regex kStoppedObject(
+      R"(\b(?:the|a|an|another|other|several)\s+(?:[\w-]+\s+)?stopped\s+(?:[\w-]+\s+)?(?:vehicles?|cars?|trucks?|vans?|minivans?|suvs?|pickups?|sedans?|bus|buses|traffic)\b)");
+  // Nor is the queue's stop: "did not recognize that the queue had stopped".
+  static const regex kQueueStopped(
+      R"(\b(?:the|that)\s+(?:queue|traffic|line of (?:traffic|vehicles|cars))\s+(?:ahead\s+)?(?:had|was|were)\s+(?:already\s+|just\s+)?(?:stopped|come to a stop|at a stop)\b)");
+  const string stops = std::regex_replace(
+      std::regex_replace(std::regex_replace(t, kAlmostStopped, " "), kStoppedObject, " "), kQueueStopped, " ");
+  // "moved forward ... and then stopped again": the last word is the stop.
+  static const regex kStoppedAgain(R"(\b(?:stopped|came to a stop|halted)\s+again\b)");
+  if (Has(stops, kStoppedAgain)) e.stopped_again = true;
+  if (Has(stops, kStopState) && !parked && !Has(t, kNoStop) && !Has(t, kAvoidanceStop)) {
+    if (Has(t, kStopThenGo) && !e.stopped_again) {
+      e.stop_cancelled = true;
+    } else {
+      e.stopped = true;
+    }
+  }
+  static const regex kEntered(
+      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
+      R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b)");
+  // A lane's name is not a manoeuvre: "in the two-way left turn lane".
+  static const regex kTurnLane(
+      R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b|\b(?:left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b)");
+  const string turns = std::regex_replace(t, kTurnLane, " lane ");
+  const bool intention = Has(turns, kIntention);
+  // "slowing with its right turn signal on to turn into the driveway".
+  static const regex kTurnMeant(R"(\bto (?:make a |begin a )?turn\b|\bturn signal\b)");
+  if (Has(t, kTurnMeant)) e.turn_meant = true;
+  // "slowed with its left turn signal on": the signal tells the intent.
+  static const regex kOwnSignal(
+      R"(\b(?:with|had|activated|turned on|put on|using)\s+(?:its|his|her|their)\s+(left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b|\bsignal(?:ed|led|ing)\s+(?:for\s+)?a\s+(left|right)\s+turn\b)");
+  if (smatch sm; std::regex_search(t, sm, kOwnSignal)) {
+    ((sm[1].matched ? sm[1].str() : sm[2].str()) == "left" ? e.intent_left : e.intent_right) = true;
+  }
+  if (!intention) {
+    if (Has(turns, kLeft)) e.turn_left = true;
+    if (Has(turns, kRight)) e.turn_right = true;
+  } else {
+    if (Has(turns, kLeft)) e.intent_left = true;
+    if (Has(turns, kRight)) e.intent_right = true;
+  }
+  if (Has(t, kEntered)) e.entered = true;
+  // "in the lane to v1's right ... moved into v1's lane": from beside it,
+  // not across the centre line.
+  static const regex kIntoTheirLane(R"(\binto\s+v[1-9]'?s\s+lane\b)");
+  static const regex kBeside(R"(\blane to (?:the|v[1-9]'?s|his|her|its|their) (?:left|right)\b|\b(?:adjacent|next) lane\b)");
+  // A lane change told as long past is not the pre-crash movement ("his
+  // turn signal was still on from moving into the right lane a block earlier").
+  static const regex kEarlierMove(
+      R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b)");
+  // Nor one only meant: "had looked over his shoulder to change lanes and
+  // did not see that traffic had stopped", "was checking his mirror before
+  // changing lanes".
+  static const regex kMeantLaneChange(
+      R"(\b(?:look\w*|check\w*|glanc\w*|want\w*|intend\w*|plann\w*|prepar\w*|about)\b[^.;]{0,40}?\b(?:to change|(?:before|prior to) changing) lanes?\b)");
+  // Nor the swerve that tried to avoid the crash ("steered left into the
+  // inside lane, but the front of v1 struck ..."): that follows the
+  // critical event.
+  // Nor one it could not make: "he could not change lanes because of traffic".
+  static const regex kNoLaneChange(
+      R"(\b(?:could not|couldn't|unable to|did not|didn't|not able to|never|without)\s+(?:\w+\s+)?chang\w*\s+lanes?\b)");
+  static const regex kEvasive(
+      R"(\b(?:steered|swerved|veered|steering|swerving)\b[^.;]{0,60}?(?:,\s*but\b|\bto avoid\b|\bin an (?:attempt|effort) to avoid\b))");
+  string lanes = t;
+  for (const regex* not_made : {&kEarlierMove, &kMeantLaneChange, &kEvasive, &kNoLaneChange}) {
+    lanes = std::regex_replace(lanes, *not_made, " ");
+  }
+  if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
+  static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
+  if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
+  if (Has(t, kMerge)) e.merge = true;
+  static const regex kInCurve(R"(\b(?:entered|entering|negotiat\w+|rounding|round|into)\s+(?:the|a)\s+(?:[\w-]+\s+){0,2}?curve\b)");
+  if (Has(t, kInCurve)) e.in_curve = true;
+  if (Has(t, kBack)) e.back = true;
+  if (Has(t, kPass)) e.pass = true;
+  // "she had slowed as she approached the light, but it turned green ...
+  // and continued": the slowing was over before the critical event.
+  static const regex kSlowThenGo(
+      R"(\bslow(?:ed|ing)\b[^.]{0,90}?\b(?:but|then|and)\b[^.]{0,60}?\b(?:continued|proceeded|accelerated|sped up|resumed)\b)");
+  // Nor is a speed kept down for the weather ("he had slowed for the ice
+  // and was traveling about 35 mph"): it was driving on at that speed.
+  static const regex kSlowForConditions(
+      R"(\bslowed\s+(?:down\s+)?(?:for|because of|due to)\s+(?:the\s+)?(?:ice|icy|snow\w*|rain|fog\w*|weather|wet|slick|slippery|road conditions|conditions)\b)");
+  if (Has(std::regex_replace(t, kSlowForConditions, " "), kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
+  if (Has(t, kStraight)) e.straight = true;
+  static const regex kStarted(
+      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
+  if (Has(t, kStarted)) e.started = true;
+  static const regex kOnGreen(
+      R"(\b(?:when|once|after|as soon as|as)\s+(?:the\s+)?(?:traffic\s+)?(?:light|signal)\s+(?:for\s+[\w ]{1,30}?\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b)");
+  if (Has(t, kOnGreen)) e.green_start = true;
+  static const regex kUTurn(R"(\bu-?\s?turn)");
+  if (!intention && Has(t, kUTurn)) e.u_turn = true;
+}
+
+// NHTSA critical-event wording ("this vehicle traveling, turning left at
+// intersection", "other motor vehicle in lane, other vehicle stopped").
+void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other) {
+  static const regex kSelfLeft(R"(\bthis vehicle\b[^.]{0,40}?\bturning left)");
+  static const regex kSelfRight(R"(\bthis vehicle\b[^.]{0,40}?\bturning right)");
+  static const regex kSelfStraight(
+      R"(\bthis vehicle\b[^.]{0,40}?\b(?:crossing over|passing through|going straight|over the (?:left |right )?lane line|off the edge|control loss|traveling too fast|over the line)|)"
+      // "... was when she began to travel over the lane line".
+      R"(\bwhen (?:he|she|it|the (?:driver|vehicle)|v[1-9])\s+(?:(?:began|started) to (?:travel|drift|move|cross)|travell?ed|drifted|moved|crossed)\s+over the (?:left |right )?(?:lane|center|centre) ?line)");
+  static const regex kSelfBack(R"(\bthis vehicle\b[^.]{0,40}?\bbacking)");
+  static const regex kSelfLane(R"(\bthis vehicle\b[^.]{0,40}?\bchanging lanes)");
+  static const regex kOtherStopped(R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,40}?\bstopped\b)");
+  if (Has(t, kSelfLeft)) self.coded_turn_left = true;
+  if (Has(t, kSelfRight)) self.coded_turn_right = true;
+  if (Has(t, kSelfStraight)) self.coded_straight = true;
+  if (Has(t, kSelfBack)) self.coded_back = true;
+  if (Has(t, kSelfLane)) self.coded_lane_change = true;
+  static const regex kOtherFromAdjacent(
+      R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,60}?\bfrom (?:an |the )?adjacent lane\b|\bencroach\w*[^.]{0,40}?\bfrom (?:an |the )?adjacent lane\b)");
+  if (Has(t, kOtherFromAdjacent)) self.coded_adjacent = true;
+  if (other && Has(t, kOtherStopped)) other->other_says_stopped = true;
+  static const regex kOtherDecelerating(R"(\bwhile decelerating\b)");
+  if (other && Has(t, kOtherDecelerating)) other->other_says_decelerating = true;
+}
+
+struct MovementDecision {
+  Movement manoeuvre = Movement::kStraight;  // the path into the crash
+  Movement pre_event = Movement::kStraight;  // NASS pre-event movement: what it did before the critical event
+  Provenance source = Provenance::kInferred;
+};
+
+MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidence& st) {
+  // Narrative statements first; driver statements only when the narrative is silent.
+  const MovementEvidence& e = n.any_narrative() ? n : st;
+  auto both = [](Movement m, Provenance p) { return MovementDecision{m, m, p}; };
+  if (LeftParking(n)) {
+    const Movement path = n.turn_left    ? Movement::kTurnLeft
+                          : n.turn_right ? Movement::kTurnRight
+                          : n.back       ? Movement::kBacking
+                                         : Movement::kMerging;
+    return MovementDecision{path, Movement::kMerging, Provenance::kStated};
+  }
+  if (e.parked || n.parked) return both(Movement::kStopped, Provenance::kStated);
+  // A back out of a stall before a coded turn out of the lot is not the
+  // pre-crash movement: the turn is.
+  if ((e.back && !n.coded_turn_left && !n.coded_turn_right) || n.coded_back) {
+    return both(Movement::kBacking, Provenance::kStated);
+  }
+  if (e.leaving_parking) return both(Movement::kMerging, Provenance::kStated);
+  // A vehicle the narrative leaves stopped or waiting to turn, whose driver
+  // says it then turned, turned.
+  // So did one that meant to turn and then entered the road.
+  const bool entered = n.entered || st.entered;  // "he ... pulled onto the highway" (a driver's account)
+  const bool confirmed_left = (n.stopped && st.turn_left && !st.turn_right) || (n.intent_left && !n.intent_right && entered);
+  const bool confirmed_right = (n.stopped && st.turn_right && !st.turn_left) || (n.intent_right && !n.intent_left && entered);
+  const bool left = e.turn_left || (!e.turn_right && (n.coded_turn_left || confirmed_left));
+  const bool right = !left && (e.turn_right || n.coded_turn_right || confirmed_right);
+  if (left || right) {
+    // A vehicle that turned after a stop (at a sign, a light, or waiting for
+    // a gap) has the stop as its pre-event movement, one that rolled through
+    // has its slowing: NASS codes what it did before the critical turn.
+    // Statements count here: the narrative often only says "approaching the
+    // stop sign ... turned left".
+    MovementDecision d{left ? Movement::kTurnLeft : Movement::kTurnRight, Movement::kStraight, Provenance::kStated};
+    d.pre_event = d.manoeuvre;
+    const bool stopped = n.stopped || n.stop_cancelled || st.stopped || st.stop_cancelled;
+    // "did not stop before making the turn": slowed for it.
+    const bool rolled = n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop;
+    // Moving off a red when it turned green is NASS "starting in traffic
+    // lane", coded here as going on.
+    if (stopped && n.green_start) d.pre_event = Movement::kStraight;
+    else if (stopped && !rolled) d.pre_event = Movement::kStopped;
+    // A U-turn is its own pre-event movement (NASS "making a U-turn").
+    else if (n.u_turn || st.u_turn) d.pre_event = Movement::kTurnLeft;
+    else if (rolled) d.pre_event = Movement::kSlowing;
+    else if (n.slowing || st.slowing) d.pre_event = Movement::kSlowing;
+    // Otherwise the turn is its own pre-event movement; the record-level
+    // pass codes a turn off a curve or from the wrong lane as going straight.
+    return d;
+  }
+  // A stop before the critical event is the pre-crash movement even when a
+  // turn was intended afterwards (how NASS codes it).
+  // Unless the investigators coded it still moving: a lead struck "while
+  // decelerating" to a stop was going straight (crossing/23, straight/17).
+  const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant;
+  if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
+  if (e.stopped && (!(e.started || n.green_start) || e.stopped_again)) {
+    return both(Movement::kStopped, Provenance::kStated);
+  }
+  // A lane change that is itself the vehicle's coded critical event ("this
+  // vehicle traveling over the lane line") was preceded by driving on:
+  // NASS codes that as the pre-event movement, as for turns.
+  if (e.lane_change || n.coded_lane_change) {
+    // So is a drift out of the lane, which nobody meant.
+    const Movement before = n.coded_straight || e.drift ? Movement::kStraight : Movement::kChangingLanes;
+    return MovementDecision{Movement::kChangingLanes, before, Provenance::kStated};
+  }
+  // One that lost it in the ramp's curve before the merge was negotiating
+  // the curve (NASS codes that, not the merge it never made).
+  if (e.merge) return MovementDecision{Movement::kMerging, e.in_curve ? Movement::kStraight : Movement::kMerging, Provenance::kStated};
+  // A pass is preceded by going straight, coded or not: the three passes in
+  // the development set (straight/0, crossing/21, and straight/5 on a
+  // curve) are coded by what came before, none as passing.
+  if (e.pass) return MovementDecision{Movement::kPassing, Movement::kStraight, Provenance::kStated};
+  if (n.other_says_stopped && !e.stop_cancelled) return both(Movement::kStopped, Provenance::kInferred);
+  if (e.slowing || n.rolled_stop || st.rolled_stop) return both(Movement::kSlowing, Provenance::kStated);
+  if (e.straight || n.coded_straight || e.stop_cancelled || e.started) return both(Movement::kStraight, Provenance::kStated);
+  return both(Movement::kStraight, Provenance::kInferred);
+}
+
+// NHTSA's critical pre-crash events, when a report quotes them ("the
+// critical precrash event for v2 was other vehicle encroachment from
+
+}  // namespace
+
+// A vehicle described parked that then enters the road, turns or pulls
+// out was leaving its parking position, not a parked object.
+// So is one that backed out of its space (NASS "leaving a parking position":
+// its backing is "other than for parking" only off a parking space).
+bool LeftParking(const MovementEvidence& n) {
+  return n.parked && (n.entered || n.turn_left || n.turn_right || n.merge || n.lane_change || n.back);
+}
+
+bool Turning(Movement m) { return m == Movement::kTurnLeft || m == Movement::kTurnRight; }
+
+void ReadVehicles(Reading& rd) {
+  AccidentRecord& r = rd.r;
+  const std::vector<Sentence>& sentences = rd.sentences;
+  const size_t impact = rd.impact;
+  const std::vector<Segment>& segments = rd.segments;
+  static const regex kLaneNo(
+      R"(\b(?:in|within|using|from|occupying)\s+(?:the\s+)?(?:lane\s+([1-9])\b|([1-9])(?:st|nd|rd|th)\s+(?:\w+\s+){0,2}?lane))");
+  static const regex kSpeed(
+      R"(\b(?:travel\w*|going|speed\w*|estimated|at|approximately|about|between|around|driving|doing|less than|no more than)\s+(?:\w+\s+){0,4}?(\d{1,3})(?:\s*(?:-|to)\s*(\d{1,3}))?\s*(kmh|mph)\b)");
+  static const regex kLimitWords(R"(limit|posted|advisory|suggested|recommended|speed zone)");
+  static const regex kSameDir(R"(\b(?:same direction|also (?:travel\w*|heading|going) (?:north|south|east|west)|behind v[1-9]|followed|following)\b)");
+  static const regex kOppositeDir(R"(\b(?:opposite direction|proceeding opposite|oncoming|opposing direction)\b)");
+  rd.narrative.assign(r.vehicles.size() + 1, MovementEvidence{});
+  rd.statement.assign(r.vehicles.size() + 1, MovementEvidence{});
+  std::vector<MovementEvidence>& narrative = rd.narrative;
+  std::vector<MovementEvidence>& statement = rd.statement;
+  std::vector<int> relation(r.vehicles.size() + 1, 0);  // +1 same direction as the other, -1 opposite
+  std::vector<std::optional<Compass>> late_travel(r.vehicles.size() + 1);
+  for (const Segment& seg : segments) {
+    if (seg.vehicle < 1 || seg.vehicle > static_cast<int>(r.vehicles.size())) continue;
+    const size_t vi = static_cast<size_t>(seg.vehicle);
+    VehicleRecord& v = r.vehicles[vi - 1];
+    const Kind kind = sentences[seg.sentence].kind;
+    // Told after the impact but in the past perfect ("v2 had stopped at the
+    // sign before initiating its turn"): still what happened before it.
+    static const regex kPastPerfect(
+        R"(^\s*(?:v[1-9]|he|she|they|it|the driver(?: of v[1-9])?)\b[^.]{0,80}?\bhad\s+(?:\w+\s+)?(?:been|stopped|slowed|turned|begun|started|come|pulled|entered)\b)");
+    const bool pre_impact = seg.sentence <= impact || impact == sentences.size() || Has(seg.text, kPastPerfect);
+    // Told after the impact about the time before the manoeuvre ("he did not
+    // stop before making the turn"): read as the driver's account.
+    static const regex kBeforeTheCrash(
+        R"(\b(?:before|prior to)\s+(?:making|starting|beginning|initiating|entering|turning|pulling|the (?:turn|crash|collision|impact)|impact)\b)");
+    const bool told_of_before = !pre_impact && Has(seg.text, kBeforeTheCrash);
+    // A vehicle first met after the impact, with its state in a relative
+    // clause ("was pushed into v3, a honda, which was stopped at the light"),
+    // or one said to be parked: that state is from before the crash.
+    static const regex kRelativeState(
+        R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)|(?:was|were|had been)\s+(?:legally\s+|lawfully\s+)?(?:parked|unoccupied))\b)");
+    // A vehicle introduced after the impact ("v2 was a 1997 dodge pickup that
+    // was stopped to make a left turn"): the introduction is background.
+    static const regex kIntroduction(R"(^v[1-9]\s+(?:was|is)\s+an?\s+(?:(?:19|20)\d\d|[a-z]+\s+(?:19|20)\d\d)\b)");
+    const bool state_in_relative = !pre_impact && (Has(seg.text, kRelativeState) || Has(seg.text, kIntroduction));
+    smatch m;
+    if (kind == Kind::kNarrative || kind == Kind::kStatement) {
+      // After the impact a direction is where the vehicle went ("continued
+      // into the southbound lane"); only one told with a travel verb is its
+      // course, and only when nothing else gives one (below).
+      static const regex kTravelling(
+          R"(\b(?:travel\w*|heading|headed|driving|proceeding|going)\s+(?:\w+\s+){0,2}?(?:north|south|east|west)\w*)");
+      static const regex kAtRest(R"(\b(?:rest|facing|came to)\b)");  // where it ended up, not its course
+      if (!v.travel.known() && pre_impact) {
+        if (const auto d = DirectionIn(seg.text)) v.travel.Set(*d, Provenance::kStated);
+      } else if (!late_travel[vi] && kind == Kind::kNarrative && Has(seg.text, kTravelling) && !Has(seg.text, kAtRest)) {
+        late_travel[vi] = DirectionIn(seg.text);
+      }
+      if (relation[vi] == 0 && pre_impact) {
+        if (Has(seg.text, kOppositeDir)) relation[vi] = -1;
+        else if (Has(seg.text, kSameDir)) relation[vi] = 1;
+      }
+      // Where it came to rest ("came to rest in lane 3") is not its lane,
+      // nor is another vehicle's ("thought v2 was in lane 2").
+      if (!v.lane.known() && !Has(seg.text, kAtRest) && std::regex_search(seg.text, m, kLaneNo)) {
+        const size_t at = static_cast<size_t>(m.position());
+        const string lead = Before(seg.text, at, 20);
+        static const regex kRefNear(R"(\bv([1-9])\b)");
+        smatch rm;
+        const bool other = std::regex_search(lead, rm, kRefNear) && std::stoi(rm[1].str()) != seg.vehicle;
+        if (!other) v.lane.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
+      }
+    }
+    if (kind != Kind::kCoding && !v.speed_mps.known() && !Has(seg.text, kLimitWords) &&
+        std::regex_search(seg.text, m, kSpeed)) {
+      const double lo = std::stod(m[1].str());
+      const double hi = m[2].matched ? std::stod(m[2].str()) : lo;
+      const bool kmh = m[3].str() == "kmh";
+      if (hi < 200) {
+        v.speed_mps.Set(0.5 * (lo + hi) * (kmh ? kKmhToMps : kMphToMps), Provenance::kStated);
+        v.speed_unit.Set(kmh ? "km/h" : "mph", Provenance::kStated);
+      }
+    }
+    static const regex kParkedOnly(R"(\bparked\b)");
+    if (kind == Kind::kNarrative && pre_impact && !seg.perceived) {
+      ReadMovement(seg.text, narrative[vi]);
+    } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, kParkedOnly)) ||
+               (kind == Kind::kNarrative && (told_of_before || state_in_relative))) {
+      ReadMovement(seg.text, statement[vi]);
+    } else if (kind == Kind::kCoding) {
+      MovementEvidence* other = nullptr;
+      if (r.vehicles.size() == 2) other = &narrative[vi == 1 ? 2 : 1];
+      ReadCoding(seg.text, narrative[vi], other);
+    }
+  }
+  // "4 passenger vehicles were stopped in the right lane: v5, ..., then v4,
+  // ...": every vehicle listed after the colon is in that state.
+  {
+    static const regex kListState(
+        R"(\b(?:\d|all|the|several)\s+(?:\w+\s+)?(?:vehicles|cars)\s+were\s+(?:\w+\s+)?(stopped|stationary|waiting|queued|slowing)\b[^:]*:)");
+    // The list may run on over ";"-separated items ("; then v4, a sienna").
+    static const regex kListItem(R"(^(?:then|and|followed by)?\s*v[1-9]\b)");
+    for (size_t i = 0; i < sentences.size(); ++i) {
+      const Sentence& s = sentences[i];
+      smatch m;
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kListState)) continue;
+      auto mark = [&](const Sentence& t, size_t from) {
+        for (const Ref& ref : t.refs) {
+          if (ref.pos < from || ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
+          (m[1].str() == "slowing" ? statement[static_cast<size_t>(ref.vehicle)].slowing
+                                   : statement[static_cast<size_t>(ref.vehicle)].stopped) = true;
+        }
+      };
+      mark(s, static_cast<size_t>(m.position() + m.length()));
+      for (size_t j = i + 1; j < sentences.size() && Has(sentences[j].text, kListItem); ++j) mark(sentences[j], 0);
+    }
+  }
+  // "When the signal turned green, both vehicles began to move forward":
+  // what the vehicles did together before the impact is each one's.
+  {
+    static const regex kAllSubject(
+        R"((?:^|[,;:]\s*|\b(?:and|then|when|as)\s+)(?:both|all|all 3|all 4|the 2|the 3) (?:vehicles|cars|units)\b(?!\s+(?:came|were (?:towed|driven|removed)|rested)\b))");
+    for (size_t i = 0; i < sentences.size() && i < impact; ++i) {
+      const Sentence& s = sentences[i];
+      smatch m;
+      if (s.kind != Kind::kNarrative || !std::regex_search(s.text, m, kAllSubject)) continue;
+      const string together = m.suffix().str();
+      for (size_t k = 1; k < narrative.size(); ++k) ReadMovement(together, narrative[k]);
+    }
+  }
+  // "Both vehicles were traveling north": every vehicle the text gives no
+  // direction of its own.
+  // So does a list of them: "v1, v2 and v3 were northbound".
+  static const regex kAllTravel(
+      R"(\b(?:(?:both|all|the 2|the 3) (?:vehicles|cars|units)|(v[1-9](?:\s*,\s*v[1-9])*,?\s+and\s+v[1-9]))\b[^.]{0,30}?\b(?:travel\w*|heading|headed|going|proceeding|driving|were)\s+(?:due\s+)?(north|south|east|west)(?:bound)?\b)");
+  for (const Sentence& s : sentences) {
+    smatch all;
+    if ((s.kind == Kind::kNarrative || s.kind == Kind::kStatement) && std::regex_search(s.text, all, kAllTravel)) {
+      std::set<int> listed;
+      const string list = all[1].str();
+      for (const Ref& ref : RefsIn(list)) listed.insert(ref.vehicle);
+      for (size_t i = 0; i < r.vehicles.size(); ++i) {
+        VehicleRecord& v = r.vehicles[i];
+        const bool named = listed.empty() || listed.count(static_cast<int>(i) + 1);
+        if (named && !v.travel.known()) v.travel.Set(CompassWord(all[2].str()), Provenance::kStated);
+      }
+      break;
+    }
+  }
+  // Inverted: "southbound on the same road were v2, followed by v3, and then
+  // v4": every vehicle named after the verb.
+  {
+    static const regex kInverted(R"(^(?:also\s+)?(north|south|east|west)bound\b[^.]{0,60}?\b(?:was|were)\s+(?=v[1-9]\b))");
+    for (const Sentence& s : sentences) {
+      smatch m;
+      if (s.kind != Kind::kNarrative || !std::regex_search(s.text, m, kInverted)) continue;
+      for (const Ref& ref : s.refs) {
+        if (ref.pos < static_cast<size_t>(m.length(0)) || ref.vehicle > static_cast<int>(r.vehicles.size())) continue;
+        VehicleRecord& v = r.vehicles[static_cast<size_t>(ref.vehicle - 1)];
+        if (!v.travel.known()) v.travel.Set(CompassWord(m[1].str()), Provenance::kStated);
+      }
+    }
+  }
+  // Directions stated relative to the other vehicle; then those told only
+  // after the impact, and the relative ones again.
+  auto relative_directions = [&] {
+    if (r.vehicles.size() < 2) return;
+    for (size_t i = 1; i <= 2; ++i) {
+      VehicleRecord& v = r.vehicles[i - 1];
+      const VehicleRecord& o = r.vehicles[2 - i];
+      if (!v.travel.known() && o.travel.known() && o.travel.value && relation[i] != 0) {
+        const Compass c = *o.travel.value;
+        v.travel.Set(relation[i] > 0 ? c : static_cast<Compass>((static_cast<int>(c) + 2) % 4), Provenance::kInferred);
+      }
+    }
+  };
+  relative_directions();
+  for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    if (!r.vehicles[i].travel.known() && late_travel[i + 1]) r.vehicles[i].travel.Set(*late_travel[i + 1], Provenance::kStated);
+  }
+  relative_directions();
+  // "v1 failed to slow for stopped traffic, striking v2, which was pushed
+  // into v3": the vehicles it ran into were that traffic.
+  {
+    static const regex kIntoQueue(
+        R"(\bv([1-9])\b[^.]{0,40}?\b(?:failed to|did not|didn't|could not|couldn't|was unable to|unable to)\s+(?:\w+\s+)?(?:slow|stop)\w*\s+(?:\w+\s+){0,2}?for\s+(?:the\s+)?(?:(stopped|stationary|queued|backed[- ]up)|slowing|slowed|slower)\s+(?:traffic|vehicles|cars)\b)");
+    for (const Sentence& s : sentences) {
+      smatch m;
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kIntoQueue)) continue;
+      const int runner = std::stoi(m[1].str());
+      for (size_t i = 1; i < narrative.size(); ++i) {
+        if (static_cast<int>(i) == runner || narrative[i].any_narrative() || statement[i].any_narrative()) continue;
+        (m[2].matched ? statement[i].stopped : statement[i].slowing) = true;
+      }
+      break;
+    }
+  }
+  // CIREN case summaries code a vehicle that stopped and then turned by its
+  // turn (the development set's one such case, a car stopped in the mouth of
+  // a driveway waiting to turn left, is coded turning left); NMVCCS reports,
+  // which quote the coded critical events, code the stop.
+  // (Read in the text as given: normalising names the case vehicle v1.)
+  static const regex kCaseSummary(R"(\bcase\s+(?:vehicle|occupant)\b)", std::regex::icase);
+  rd.case_summary = std::regex_search(rd.text.begin(), rd.text.end(), kCaseSummary) && !rd.quotes_coding;
+  const bool case_summary = rd.case_summary;
+  for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    VehicleRecord& v = r.vehicles[i];
+    if ((narrative[i + 1].parked || statement[i + 1].parked) && !LeftParking(narrative[i + 1])) {
+      v.parked.Set(true, Provenance::kStated);
+    }
+    MovementDecision d = DecideMovement(narrative[i + 1], statement[i + 1]);
+    const bool turned = d.manoeuvre == Movement::kTurnLeft || d.manoeuvre == Movement::kTurnRight;
+    if (case_summary && turned && d.pre_event == Movement::kStopped) d.pre_event = d.manoeuvre;
+    v.movement.Set(d.manoeuvre, d.source);
+    v.pre_event.Set(d.pre_event, d.source);
+    if (v.parked.value) {
+      v.movement.Set(Movement::kStopped, Provenance::kStated);
+      v.pre_event.Set(Movement::kStopped, Provenance::kStated);
+    }
+  }
+}
+
+}  // namespace accsim::narrative
