@@ -466,16 +466,27 @@ void ReadRoadKind(Reading& rd) {
   else if (Has(scene, kCurve)) r.road.kind.Set(RoadKind::kCurve, Provenance::kStated);
 }
 
-void ReadLanes(Reading& rd, const RoadContext& ctx) {
-  AccidentRecord& r = rd.r;
+bool AtJunction(const AccidentRecord& r) {
+  return r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
+}
+
+const regex& OneWayWord() {
+  static const regex kOneWay(R"(\boneway\b)");
+  return kOneWay;
+}
+
+const regex& TwoWayWord() {
+  static const regex kTwoWay(R"(\b2[- ]way\b)");
+  return kTwoWay;
+}
+
+// Every statement of a road's lane count ("a 4-lane divided highway", "2
+// lanes in each direction", "3 northbound lanes"), in the order told, with
+// what places it: the vehicle whose segment states it, the road's axis and
+// name, one-way, cross street or ramp.
+std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& ctx) {
   const std::vector<Sentence>& sentences = rd.sentences;
-  const std::vector<Segment>& segments = rd.segments;
   const string& scene = rd.scene;
-  const bool case_summary = rd.case_summary;
-  const int v1_axis = ctx.v1_axis;
-  const string& v1_road = ctx.v1_road;
-  const string& v1_named_road = ctx.v1_named_road;
-  const bool distinctive = ctx.distinctive;
   // "2 through lanes plus a left-turn bay in each direction": 3 each way.
   static const regex kPerDir(
       R"(\b(\d)[- ](?:through\s+|travel\s+|moving\s+)?lanes?\s+(?:of\s+(?:traffic|travel)\s+)?(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
@@ -487,7 +498,6 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
       R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|travel\s+|through\s+)?lanes?\b|(?=\s*(?:[,;.)]|and\b|$)))|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
   static const regex kTotal(
       R"(\b(\d)[- ](?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:of\s+(?:traffic|travel)\s+)?(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
-  static const regex kOneWayHere(R"(\boneway\b)");
   // Roads named with their axis ("a north/south rural highway and an
   // east/west county road") give it to later sentences about them ("the
   // county road is a 2-lane road").
@@ -562,7 +572,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
                                : near_after.find(',');
       const size_t stop = std::min(comma, near_after.find(" and "));
       if (stop != string::npos) near_after = near_after.substr(0, stop);
-      rs.one_way = Has(near_before, kOneWayHere) || Has(near_after, kOneWayHere);
+      rs.one_way = Has(near_before, OneWayWord()) || Has(near_after, OneWayWord());
       static const regex kCrossStreet(
           R"(\b(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b|\bthe stem\b)");
       rs.cross = Has(around, kCrossStreet);
@@ -706,6 +716,25 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
   std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) {
     return a.sentence != b.sentence ? a.sentence < b.sentence : a.pos < b.pos;
   });
+  return roads;
+}
+// The lane statement taken for V1's road, and whether V1 is said to use a
+// one-way (+1) or a two-way (-1) road (0: not said).
+struct V1Lanes {
+  const RoadStatement* best = nullptr;
+  int v1_way = 0;
+};
+
+V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector<RoadStatement>& roads) {
+  AccidentRecord& r = rd.r;
+  const std::vector<Sentence>& sentences = rd.sentences;
+  const std::vector<Segment>& segments = rd.segments;
+  const string& scene = rd.scene;
+  const int v1_axis = ctx.v1_axis;
+  const string& v1_road = ctx.v1_road;
+  const string& v1_named_road = ctx.v1_named_road;
+  const bool distinctive = ctx.distinctive;
+  V1Lanes choice;
   // V1's road: stated in V1's own segment, else the road on V1's axis, else
   // the first road not tied to another vehicle (the crash road is
   // described first).
@@ -741,7 +770,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
   static const regex kOnOneWay(R"(\b(?:on|along|from|down|up|in) (?:the|a|an) (?:\w+ ){0,2}?oneway\b)");
   static const regex kOnTwoWay(
       R"(\b(?:on|along|from|down|up|in) (?:the|a|an) (?:\w+ ){0,2}?2[- ]way (?:road|roadway|street|highway|avenue|trafficway)\b)");
-  int v1_way = 0;  // +1 one-way, -1 two-way, 0 not said
+  int& v1_way = choice.v1_way;
   for (const Segment& seg : segments) {
     if (seg.perceived || sentences[seg.sentence].kind == Kind::kCoding) continue;
     // The road it turned onto is not the one it was on ("turned left to
@@ -750,8 +779,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
     if (seg.vehicle == 1 && Has(travelled, kOnOneWay)) v1_way = 1;
     else if (seg.vehicle == 1 && Has(travelled, kOnTwoWay) && v1_way == 0) v1_way = -1;
   }
-  static const regex kTwoWay(R"(\b2[- ]way\b)");
-  if (v1_way == 0 && Has(scene, kTwoWay)) {
+  if (v1_way == 0 && Has(scene, TwoWayWord())) {
     for (const Segment& seg : segments) {
       if (seg.vehicle > 1 && !seg.perceived && Has(seg.text, kOnOneWay)) v1_way = -1;
     }
@@ -765,7 +793,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
       v1_on_ramp = true;
     }
   }
-  const RoadStatement* best = nullptr;
+  const RoadStatement*& best = choice.best;
   if (v1_on_ramp) best = pick([](const RoadStatement& rs) { return rs.ramp && rs.owner <= 1; });
   if (!best && v1_way != 0) best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.one_way == (v1_way > 0); });
   if (!best && v1_way > 0) {
@@ -804,7 +832,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
   // At a junction, V1 travelling across every road the report counts
   // lanes of was on one it does not describe: an ordinary two-lane,
   // two-way road.
-  const bool junction = r.road.kind.value == RoadKind::kIntersection || r.road.kind.value == RoadKind::kTJunction;
+  const bool junction = AtJunction(r);
   if (best && junction && v1_axis >= 0 && best->owner != 1 &&
       std::all_of(roads.begin(), roads.end(), [&](const RoadStatement& rs) {
         return rs.axis && *rs.axis != v1_axis && !rs.cross && rs.owner != 1;
@@ -819,6 +847,18 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
     for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d road '%s' counted '%s']%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, rs.road.c_str(), rs.counted.c_str(), &rs == best ? " <- best" : "");
     std::fprintf(stderr, "[v1 turns onto: %s]\n", v1_onto.c_str());
   }
+  return choice;
+}
+
+// V1's road's lanes from the statement chosen and those about the same road.
+void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadStatement>& roads, const V1Lanes& choice) {
+  AccidentRecord& r = rd.r;
+  const std::vector<Sentence>& sentences = rd.sentences;
+  const string& scene = rd.scene;
+  const int v1_axis = ctx.v1_axis;
+  const bool junction = AtJunction(r);
+  const RoadStatement* best = choice.best;
+  const int v1_way = choice.v1_way;
   if (best) {
     // Combine statements about the same road (a total in one sentence, the
     // split per direction in the next).
@@ -886,7 +926,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
     const bool each_way = best->per_direction > 0;
     for (size_t k = best->sentence > 0 ? best->sentence - 1 : 0; k <= best->sentence && v1_way == 0 && !one_way && !each_way; ++k) {
       const string& t = sentences[k].text;
-      if (Has(t, kOneWaySentence) && !Has(t, kOtherRoadPhrase) && !Has(scene, kTwoWay)) one_way = true;
+      if (Has(t, kOneWaySentence) && !Has(t, kOtherRoadPhrase) && !Has(scene, TwoWayWord())) one_way = true;
       // "a southbound one-way avenue and a two-way street. the avenue had
       // 3 travel lanes": the counted road is the one called one-way.
       if (!best->road.empty() && !GenericRoad(best->road) &&
@@ -939,7 +979,7 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
       } else {
         r.road.lanes_total.Set(total ? total : 2 * per + centre, total ? Provenance::kStated : Provenance::kInferred);
       }
-    } else if (total == 1 && Has(sentences[best->sentence].text, kTwoWay)) {
+    } else if (total == 1 && Has(sentences[best->sentence].text, TwoWayWord())) {
       // "a two way, one lane roadway": one lane each way.
       r.road.lanes_per_direction.Set(1, Provenance::kStated);
       r.road.lanes_total.Set(2, Provenance::kInferred);
@@ -960,9 +1000,19 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
       r.road.lanes_total.Set(2 * directional, Provenance::kInferred);
     }
   }
-  if (!best && Has(scene, kOneWayHere) && !Has(scene, kTwoWay)) {
+  if (!best && Has(scene, OneWayWord()) && !Has(scene, TwoWayWord())) {
     r.road.one_way.Set(true, Provenance::kStated);
   }
+}
+
+void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadStatement>& roads, const RoadStatement* best) {
+  AccidentRecord& r = rd.r;
+  const std::vector<Sentence>& sentences = rd.sentences;
+  const int v1_axis = ctx.v1_axis;
+  const string& v1_road = ctx.v1_road;
+  const string& v1_named_road = ctx.v1_named_road;
+  const bool distinctive = ctx.distinctive;
+  const bool junction = AtJunction(r);
   // "divided by two solid yellow lines" is paint, not a divided road; a
   // freeway counts when the crash is on it, not "a nearby interstate".
   static const regex kDivided(
@@ -1076,7 +1126,14 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
     r.road.lanes_per_direction.Set(2, Provenance::kInferred);
     r.road.lanes_total.Set(4, Provenance::kInferred);
   }
+}
 
+void DrivewayLanes(Reading& rd, const RoadStatement* best) {
+  AccidentRecord& r = rd.r;
+  const std::vector<Sentence>& sentences = rd.sentences;
+  const std::vector<Segment>& segments = rd.segments;
+  const string& scene = rd.scene;
+  const bool case_summary = rd.case_summary;
   // V1 leaving a driveway or parking lot was on it: NMVCCS counts its
   // lanes, a two-way drive of one lane each way unless the report counts
   // them.
@@ -1117,6 +1174,14 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
     r.road.lanes_per_direction.Set(lanes_needed, Provenance::kInferred);
     r.road.lanes_total.Set(r.road.lanes_total.value + (r.road.one_way.value ? extra : 2 * extra), Provenance::kInferred);
   }
+}
+
+void ReadLanes(Reading& rd, const RoadContext& ctx) {
+  const std::vector<RoadStatement> roads = LaneStatements(rd, ctx);
+  const V1Lanes choice = ChooseV1Statement(rd, ctx, roads);
+  CountLanes(rd, ctx, roads, choice);
+  ReadDivision(rd, ctx, roads, choice.best);
+  DrivewayLanes(rd, choice.best);
 }
 
 void ReadConditions(Reading& rd) {
