@@ -577,7 +577,12 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
           R"(\b(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b|\bthe stem\b)");
       rs.cross = Has(around, kCrossStreet);
       static const regex kRampAfter(R"(^[\w ,-]{0,30}?\bramp\b)");
-      rs.ramp = Has(s.text.substr(pos + static_cast<size_t>(m.length(0)), 40), kRampAfter);
+      // ... or the sentence is about the ramp: "the ramp was a 1-way roadway
+      // that widened from 1 lane to 2 lanes near its end".
+      static const regex kRampSubject(
+          R"(^(?:the|this|that)\s+(?:[\w/-]+\s+){0,3}?ramp\s+(?:was|is|had|has|widened|widens|carried|carries)\b[^;]*$)");
+      rs.ramp = Has(s.text.substr(pos + static_cast<size_t>(m.length(0)), 40), kRampAfter) ||
+                Has(s.text.substr(0, pos), kRampSubject);
       // The phrase runs on to the next road named ("1 lane in each direction
       // and an east/west 2-way roadway with ... a center left turn lane":
       // the centre lane is the other road's).
@@ -600,6 +605,16 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       rs.per_direction = per_dir;
       rs.directional = directional;
       roads.push_back(rs);
+    };
+    // The junction's count replaces the totals told before it in the sentence.
+    auto replace_totals_before = [&](size_t at) {
+      const int owner = OwnerAt(s, at);
+      roads.erase(std::remove_if(roads.begin(), roads.end(),
+                                 [&](const RoadStatement& o) {
+                                   return o.sentence == i && o.pos < at && o.owner == owner && o.total &&
+                                          !o.per_direction && !o.directional;
+                                 }),
+                  roads.end());
     };
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kPerDir); it != std::sregex_iterator(); ++it) {
       add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
@@ -631,6 +646,10 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       if (Has(after, kNotARoadAfter)) continue;
       static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)");
       if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), kNotARoadBefore)) continue;
+      // Nor what the road was elsewhere: "200 meters west the road had been
+      // a 4-lane section", "widened from 1 lane to 2 lanes".
+      static const regex kNotHere(R"(\bhad been\s+(?:a|an)\s+$|\b(?:widen\w*|expand\w*|increas\w*|narrow\w*)\s+from\s+$)");
+      if (Has(Before(s.text, static_cast<size_t>(it->position()), 25), kNotHere)) continue;
       // "the eastbound roadway had 3 travel lanes", "the southbound side
       // widened to 3 lanes", "southbound there were 3 lanes", "the
       // eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
@@ -666,18 +685,21 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       }
       // "a 2-lane roadway that widened to 3 lanes on each approach to the
       // intersection": the junction's count replaces the totals before it.
-      static const regex kWidenedTo(R"(\b(?:widen\w*|flare\w*|expand\w*|increas\w*)\s+(?:out\s+)?to\s+$)");
-      if (Has(Before(s.text, static_cast<size_t>(it->position()), 20), kWidenedTo)) {
-        const size_t at = static_cast<size_t>(it->position());
-        const int owner = OwnerAt(s, at);
-        roads.erase(std::remove_if(roads.begin(), roads.end(),
-                                   [&](const RoadStatement& o) {
-                                     return o.sentence == i && o.pos < at && o.owner == owner && o.total &&
-                                            !o.per_direction && !o.directional;
-                                   }),
-                    roads.end());
+      static const regex kWidenedTo(
+          R"(\b(?:widen\w*|flare\w*|expand\w*|increas\w*)\s+(?:out\s+)?(?:from\s+\d\s+lanes?\s+)?to\s+$)");
+      if (Has(Before(s.text, static_cast<size_t>(it->position()), 35), kWidenedTo)) {
+        replace_totals_before(static_cast<size_t>(it->position()));
       }
       add(*it, static_cast<size_t>(it->position()), n, 0, 0);
+    }
+    // ... also with the noun said once: "the highway widened from 2 lanes to 3".
+    static const regex kWidenedFromTo(
+        R"(\b(?:widen\w*|expand\w*|increas\w*)\s+from\s+\d\s+lanes?\s+to\s+(\d)\b(?!\s*(?:-|\s)\s*(?:through\s+|travel\s+)?lanes?\b))");
+    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kWidenedFromTo); it != std::sregex_iterator();
+         ++it) {
+      const size_t at = static_cast<size_t>(it->position(1));
+      replace_totals_before(at);
+      add(*it, at, std::stoi((*it)[1].str()), 0, 0);
     }
     // "1 northbound lane, 1 southbound lane and a northbound left-turn
     // lane": the road's lanes, listed; their sum is its total (after the
@@ -786,7 +808,9 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   }
   // V1 on a ramp the report counts the lanes of ("entering the freeway
   // from the ramp").
-  static const regex kOnRamp(R"(\b(?:on|from|along|down|up|entering|exiting|via)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
+  // (Also "in the left-turn lane of the ramp".)
+  static const regex kOnRamp(
+      R"(\b(?:on|from|along|down|up|entering|exiting|via|lanes?\s+of)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
   bool v1_on_ramp = false;
   for (const Segment& seg : segments) {
     if (seg.vehicle == 1 && !seg.perceived && sentences[seg.sentence].kind != Kind::kCoding && Has(seg.text, kOnRamp)) {
@@ -888,7 +912,22 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
       // (A count of V1's own direction may come two sentences on: "a
       // 4-lane divided highway. the highway was divided by a median ... .
       // the northbound side had 3 northbound lanes".)
-      const size_t reach = of_v1s_direction(rs) && rs.directional ? 2 : 1;
+      // A road that widens at the junction is coded by its lanes there:
+      // "each side widened to include a left-turn lane, for a total of 3
+      // lanes in each direction at the intersection", "a right-turn lane was
+      // added ..., so that there were 3 westbound lanes at the intersection"
+      // (told up to two sentences on).
+      // (Not on the approach to another junction: "150 meters east of the
+      // driveway the road widened to 4 lanes on the approach to a signalized
+      // intersection".)
+      static const regex kWidened(R"(\b(?:widen\w*|flare\w*|for a total of|(?:was|were) added|so that)\b)");
+      static const regex kAnotherJunction(
+          R"(^[^.;]{0,60}?\b(?:approach\w*\s+to|toward|towards|before)\s+(?:a|an)\s+(?:[\w-]+\s+){0,2}?(?:intersection|junction)\b)");
+      const string& told = sentences[rs.sentence].text;
+      const bool widened = rs.sentence != best->sentence &&
+                           Has(told.substr(0, std::min(told.size(), rs.pos + 40)), kWidened) &&
+                           !Has(told.substr(std::min(told.size(), rs.pos)), kAnotherJunction);
+      const size_t reach = (of_v1s_direction(rs) && rs.directional) || widened ? 2 : 1;
       if (rs.sentence > best->sentence + reach || rs.sentence + 1 < best->sentence) continue;
       if (!best->axis && rs.axis && v1_axis >= 0 && *rs.axis != v1_axis) continue;  // a road across V1's course
       if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
@@ -897,18 +936,18 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
       // ("the boulevard had 2 lanes each way. ... a 2-lane residential
       // street", best the boulevard's).
       if (rs.road.empty() && OtherKindsOfRoad(rs.counted, best->road)) continue;
-      if (!total && rs.total) total = rs.total;
-      if (!per && rs.per_direction) {
+      if (widened && rs.per_direction > per) {
         per = rs.per_direction;
         per_told = &rs;
+        if (total && total < 2 * per) total = 0;  // the count before the widening
       }
-      // A road that widens at the junction is coded by its lanes there:
-      // "each side widened to include a left-turn lane, for a total of 3
-      // lanes in each direction at the intersection".
-      static const regex kWidened(R"(\b(?:widen\w*|flare\w*|for a total of)\b)");
-      const string& widened_text = sentences[rs.sentence].text;
-      if (rs.per_direction > per && rs.sentence != best->sentence &&
-          Has(widened_text.substr(0, std::min(widened_text.size(), rs.pos + 40)), kWidened)) {
+      if (widened && rs.total > total) total = rs.total;
+      if (widened && rs.directional > directional && (!v1s_direction || of_v1s_direction(rs))) {
+        directional = rs.directional;
+        v1s_direction = of_v1s_direction(rs);
+      }
+      if (!total && rs.total) total = rs.total;
+      if (!per && rs.per_direction) {
         per = rs.per_direction;
         per_told = &rs;
       }
@@ -1171,8 +1210,15 @@ void DrivewayLanes(Reading& rd, const RoadStatement* best) {
   const int lanes_needed = std::max(v1_middle_lane ? 3 : 0, r.vehicles.empty() ? 0 : r.vehicles[0].lane.value);
   if (!v1_from_driveway && lanes_needed > r.road.lanes_per_direction.value) {
     const int extra = lanes_needed - r.road.lanes_per_direction.value;
+    // (A stated total with room for V1's lanes and the other side's is a
+    // road wider on V1's side: "3 lanes: 2 northbound and 1 southbound".)
+    const bool room = r.road.lanes_total.source == Provenance::kStated && !r.road.one_way.value &&
+                      r.road.lanes_total.value >= lanes_needed + r.road.lanes_per_direction.value;
     r.road.lanes_per_direction.Set(lanes_needed, Provenance::kInferred);
-    r.road.lanes_total.Set(r.road.lanes_total.value + (r.road.one_way.value ? extra : 2 * extra), Provenance::kInferred);
+    if (!room) {
+      r.road.lanes_total.Set(r.road.lanes_total.value + (r.road.one_way.value ? extra : 2 * extra),
+                             Provenance::kInferred);
+    }
   }
 }
 

@@ -3150,5 +3150,72 @@ TEST(NarrativeExtractorTest, MovingOffARedWhenItTurnedGreenIsStarting) {
             Movement::kStopped);
 }
 
+TEST(NarrativeExtractorTest, AWideningToldAfterTheRoadGivesItsLanesAtTheJunction) {
+  // "..., so that at the crash site there were three lanes", V1 in lane two
+  // of the wider side: three lanes, not two, nor five.
+  const RoadRecord total =
+      kExtractor
+          .Extract("The crash occurred at a signalized intersection. North of the intersection Elm Road was a "
+                   "two-lane undivided road with one lane in each direction. About 60 meters south of the "
+                   "intersection the northbound side widened to add a right-turn lane at the curb, so that at the "
+                   "crash site there were three lanes. V1 was northbound on Elm Road in lane two. V2 was stopped "
+                   "ahead of V1. The front of V1 struck the back of V2.")
+          .road;
+  EXPECT_EQ(total.lanes_total.value, 3);
+  // "... a left-turn lane was added, so that there were three eastbound
+  // lanes at the intersection", V1 eastbound: three each way on its side.
+  EXPECT_EQ(kExtractor
+                .Extract("The avenue was divided by a raised median and carried two eastbound through lanes. Some "
+                         "50 meters west of the intersection a left-turn lane was added; so that there were three "
+                         "eastbound lanes at the intersection. V1 was eastbound on the avenue. V2 was northbound on "
+                         "the cross street. The front of V2 struck the right side of V1.")
+                .road.lanes_per_direction.value,
+            3);
+  // Widening on the way to another junction is not the crash site's.
+  EXPECT_EQ(kExtractor
+                .Extract("The crash occurred at a private driveway on a two-lane, two-way county road. At the "
+                         "driveway the road had one lane in each direction; about 150 meters east the road widened "
+                         "to four lanes, two in each direction, on the approach to a signalized intersection. V1 "
+                         "was eastbound on the county road. V2 pulled out of the driveway to turn left. The front "
+                         "of V1 struck the left side of V2.")
+                .road.lanes_total.value,
+            2);
+}
+
+TEST(NarrativeExtractorTest, WhatTheRoadWasElsewhereIsNotItsCount) {
+  // "had been a four-lane section" west of the site, "leaving one lane in
+  // each direction through the crash site": two lanes.
+  EXPECT_EQ(kExtractor
+                .Extract("The crash occurred on Route 9, a two-lane rural road. About 200 meters west of the "
+                         "crash site the road had been a four-lane section; the eastbound right lane ended at a taper, "
+                         "leaving one lane in each direction through the crash site. V1 was eastbound. "
+                         "V2 was stopped in the eastbound lane. The front of V1 struck the back of V2.")
+                .road.lanes_total.value,
+            2);
+  // "the highway widened from two lanes to three": three at the junction.
+  EXPECT_EQ(kExtractor
+                .Extract("A county road met a two-lane state highway at a T-intersection. East of the intersection "
+                         "the highway widened from two lanes to three to provide a westbound left-turn lane. V1 was "
+                         "westbound on the highway in the left-turn lane. V2 was eastbound on the highway. The "
+                         "front of V2 struck the right side of V1.")
+                .road.lanes_total.value,
+            3);
+}
+
+TEST(NarrativeExtractorTest, V1OnARampThatWidensAtItsEnd) {
+  // "the ramp was a one-way roadway that widened from one lane to two lanes
+  // near its end", V1 "in the left-turn lane of the ramp": two lanes, one way.
+  const RoadRecord road =
+      kExtractor
+          .Extract("The crash occurred where an exit ramp from the interstate formed a T-intersection with a "
+                   "four-lane undivided arterial (two lanes in each direction). The ramp was a one-way roadway "
+                   "that widened from one lane to two lanes near its end. V1 was in the left-turn lane of the ramp "
+                   "and had stopped at the stop sign. V2 was eastbound on the arterial. V1 pulled out to turn left "
+                   "and the front of V2 struck the left side of V1.")
+          .road;
+  EXPECT_EQ(road.lanes_total.value, 2);
+  EXPECT_TRUE(road.one_way.value);
+}
+
 }  // namespace
 }  // namespace accsim
