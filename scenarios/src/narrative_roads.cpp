@@ -1322,7 +1322,7 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
       continue;
     }
     bool found = false;
-    size_t skip_until = 0;
+    size_t skip_until = 0, last_value_end = 0;
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kValue); it != std::sregex_iterator(); ++it) {
       const size_t pos = static_cast<size_t>(it->position());
       if (pos < skip_until) continue;
@@ -1345,6 +1345,16 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
           tail.rfind(" speed zone", 0) != 0) {  // "a 45 mph zone", "a 25 mph speed zone"
         continue;
       }
+      // After a limit, a vehicle's speed told in the same sentence is not
+      // another ("the speed limit is 70 mph and the event data recorder of
+      // v1 recorded a pre-crash speed of 68 mph").
+      static const regex kVehicleSpeed(R"(\bv[1-9]\b(?!'s)|\bspeed of\b|\brecorded\b|\btravel\w*\b)");
+      static const regex kLimitWord(R"(\blimit|\bposted\b|\bzone\b)");
+      if (last_value_end > 0 && pos > last_value_end) {
+        const string since = s.text.substr(last_value_end, pos - last_value_end);
+        if (Has(since, kVehicleSpeed) && !Has(since, kLimitWord)) continue;
+      }
+      last_value_end = pos + static_cast<size_t>(it->length(0));
       const bool kmh = (*it)[2].str() == "kmh";
       const double value = std::stod((*it)[1].str());
       if (value < 5 || value > 180) continue;
@@ -1370,8 +1380,9 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
       // ... or just before it: "and on the side road 48 kmh".
       // (Also in an ellipsis: "the highway was posted at 89 kmh and the
       // crossroad at 56 kmh".)
+      // (And "the posted speed limit on the county road was 72 kmh".)
       static const regex kOnRoadNounBefore(R"(\b(?:on|for|along|and)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" +
-                                           RoadNoun() + R"(\s*(?:,\s*|\s+at\s+)?$)");
+                                           RoadNoun() + R"((?:\s*,\s*|\s+at\s+|\s+(?:was|is)\s+|\s*)$)");
       // ... or posted itself: "meets a 4-lane undivided arterial posted at 64 kmh".
       static const regex kRoadPostedAt(R"(\b)" + RoadNoun() +
                                        R"(\s+(?:that was |which was |was |is )?(?:posted|signed|zoned)\s+(?:at|for)\s+$)");
@@ -1460,6 +1471,12 @@ void InferSpeedLimit(Reading& rd) {
   const std::vector<Segment>& segments = rd.segments;
   const string& scene = rd.scene;
   const bool quotes_coding = rd.quotes_coding;
+  // A report that says no limit was posted ("no speed limit signs were
+  // posted along this road", "there was no posted speed limit on the ramp")
+  // is coded "no statutory limit" (the development set's t/11).
+  static const regex kNoLimit(
+      R"(\b(?:no|not|without)\s+(?:a\s+|any\s+)?(?:posted\s+)?speed\s+limit\b|\bno\s+(?:posted\s+)?(?:speed\s+)?limit\s+signs?\b|\bspeed limit\s+(?:was|is)\s+not\s+posted\b|\bunposted\b)");
+  if (Has(scene, kNoLimit)) return;
   if (!r.road.speed_limit_mps.known()) {
     // The typical limit of V1's road as its own text describes it ("a
     // 4-lane, 2-way urban road"), else as the scene does (which may describe

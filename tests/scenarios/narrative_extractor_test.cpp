@@ -3217,5 +3217,40 @@ TEST(NarrativeExtractorTest, V1OnARampThatWidensAtItsEnd) {
   EXPECT_TRUE(road.one_way.value);
 }
 
+
+TEST(NarrativeExtractorTest, LimitsOfTwoRoadsUnpostedRoadsAndSpeedsAfterTheLimit) {
+  // "the posted speed limit on the county road was 72KMPH", V1 on the
+  // county road: its limit, not the highway's told first.
+  const RoadRecord two =
+      kExtractor
+          .Extract("The crash occurred at the intersection of a two lane state highway and a two lane county road. "
+                   "The posted speed limit on the highway was 89KMPH (55MPH) and the posted speed limit on the "
+                   "county road was 72KMPH (45MPH). Vehicle #1 was traveling north on the county road. Vehicle #2 "
+                   "was traveling east on the highway. Vehicle #2 impacted the left side of Vehicle #1.")
+          .road;
+  EXPECT_NEAR(two.speed_limit_mps.value * 3.6, 72.0, 0.5);
+  // "No speed limit signs were posted along this road": no limit, not the
+  // rural road's usual 55 mph.
+  const RoadRecord unposted =
+      kExtractor
+          .Extract("The crash occurred on a bridge on a rural two-lane, two-way road. No speed limit signs were "
+                   "posted along this road. Vehicle #1 was westbound and Vehicle #2 was eastbound. The left side "
+                   "of Vehicle #1 sideswiped the left side of Vehicle #2.")
+          .road;
+  EXPECT_FALSE(unposted.speed_limit_mps.known());
+  // A vehicle's recorded speed after the limit is no limit.
+  EXPECT_NEAR(kExtractor
+                      .Extract("V1 was traveling west in the left lane of a freeway. V2 was traveling west in the "
+                               "center lane. The speed limit is 70 mph and the event data recorder of V1 recorded a "
+                               "pre-crash speed of 68 mph. The left side of V2 struck the right side of V1.")
+                      .road.speed_limit_mps.value,
+              70 * 0.44704, 1e-6);
+  // ... but another road's limit said by its vehicle is still a limit.
+  EXPECT_NEAR(kExtractor
+                      .Extract("The posted speed limit on V2's road was 45 mph and on V1's road 30 mph. V1 was "
+                               "northbound. V2 was eastbound. The front of V1 struck the left side of V2.")
+                      .road.speed_limit_mps.value,
+              30 * 0.44704, 1e-6);
+}
 }  // namespace
 }  // namespace accsim
