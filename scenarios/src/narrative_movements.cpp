@@ -49,11 +49,13 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kRight(R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?right\b|\bright[- ]hand turn|\bright turn\b|\b(?:made|make|making)\s+a\s+right\s+(?:onto|into)\b)");
   // An intention is not the movement: "waiting to turn left", "intending to turn".
   static const regex kIntention(
-      R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn)|)"
+      R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would)\b[^,.]{0,30}?\b(?:turn|left|right)|\bin order to\s+(?:turn|make\s+(?:a|the)\s+(?:left|right))\b|\bintended\s+(?:left|right)|\bintended\s+(?:path|turn)|)"
       // "to get into position for a right turn into a plaza".
       R"(\bfor (?:a|an|the|his|her|its) (?:[\w-]+ )?(?:left|right) turn\b)");
   static const regex kLaneChange(
-      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder)");
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder|)"
+      // "moved right toward lane one in order to turn right".
+      R"(\b(?:moved|moving|steered|pulled|cut|swung|eased)\s+(?:over\s+)?(?:to\s+the\s+)?(?:left|right)\s+(?:toward|towards)\s+(?:the\s+)?(?:lane\s+\d|(?:left|right|curb|adjacent|next|outside|inside|center|middle)\s+lane)\b)");
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.

@@ -3252,5 +3252,21 @@ TEST(NarrativeExtractorTest, LimitsOfTwoRoadsUnpostedRoadsAndSpeedsAfterTheLimit
                       .road.speed_limit_mps.value,
               30 * 0.44704, 1e-6);
 }
+
+TEST(NarrativeExtractorTest, AMoveTowardTheNextLaneToTurnIsALaneChange) {
+  // "moved right toward lane one in order to turn right" and struck the car
+  // in that lane: a lane change (a turn only meant), a same-direction
+  // sideswipe, not a turn across V2's path.
+  const AccidentRecord r = kExtractor.Extract(
+      "The roadway has two lanes in each direction. V1, a minivan, was traveling north in lane two. V2, a sedan, "
+      "was traveling north in lane one, slightly behind the minivan. The driver of V1 realized that the side "
+      "street was her turn and moved right toward lane one in order to turn right. The right side of V1 "
+      "contacted the left side of V2. The Critical Pre-crash Event for V1 was coded this vehicle traveling, over "
+      "the lane line on the right side of travel lane. The Critical Pre-crash Event for V2 was other vehicle "
+      "encroachment from adjacent lane (same direction), over left lane line.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kChangingLanes);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
+}
 }  // namespace
 }  // namespace accsim
