@@ -3268,5 +3268,16 @@ TEST(NarrativeExtractorTest, AMoveTowardTheNextLaneToTurnIsALaneChange) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kChangingLanes);
   EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
 }
+
+TEST(NarrativeExtractorTest, WhatADriverThoughtTheOtherWasDoingIsNotHisOwnMovement) {
+  // "thought it was only slowing a little": V2's slowing as V1's driver
+  // believed it, not V1's.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling westbound in lane one behind V2. The front of V1 contacted the back of V2. The driver of "
+      "V1 was a 26-year old male. He stated that he saw V2's brake lights but thought it was only slowing a "
+      "little and he had room to stop.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
