@@ -70,8 +70,8 @@ Kind KindOf(const string& s);
 std::vector<string> SplitSentences(const string& s);
 
 VehicleClass ClassOf(const string& description);
-// The text without junctions told to be elsewhere ("2 miles past the
-// intersection").
+// The text without junctions named only as a distance away ("300 ft south
+// of the next cross street").
 string WithoutDistantJunctions(const string& s);
 string EscapeRegex(const string& s);
 std::optional<Compass> CompassWord(const string& w);
