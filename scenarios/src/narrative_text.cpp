@@ -196,13 +196,30 @@ string Normalise(std::string_view in) {
   s = std::regex_replace(s, kMakeThenModel, "v$2, a $3 $1 ");
   static const regex kNamed(
       R"(\bthe\s+((?:(?:19|20)\d\d\s+)?[a-z](?:(?!\.\s|\bthe\s)[a-z0-9/&'. -]){1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
-  s = ReplaceWith(s, kNamed, [](const std::smatch& m) {
+  std::map<string, std::set<string>> numbered_names;  // "chevrolet" -> {"1"}
+  s = ReplaceWith(s, kNamed, [&](const std::smatch& m) {
     const string name = m[1].str();
     const bool year = name.size() > 5 && (name.compare(0, 2, "19") == 0 || name.compare(0, 2, "20") == 0) &&
                       std::isdigit(static_cast<unsigned char>(name[2])) && std::isdigit(static_cast<unsigned char>(name[3])) && name[4] == ' ';
     if (year) return "v" + m[2].str() + ", a " + name + ",";
+    numbered_names[name].insert(m[2].str());
     return "v" + m[2].str() + (m[3].matched ? m[3].str() : string());
   });
+  // A vehicle introduced by make and numbered only later ("a 2005 chevrolet
+  // malibu was northbound ... the driver of the chevrolet (vehicle 1)"):
+  // the introduction is that vehicle's description.
+  static const regex kAnyNumberedIntro(R"(\bv[1-9]\s*,\s*an?\s+(?:19|20)\d\d\b)");
+  if (!Has(s, kAnyNumberedIntro)) {
+    for (const auto& [name, numbers] : numbered_names) {
+      if (numbers.size() != 1 || name.size() < 3) continue;
+      const regex intro(R"(\b(?:a|an)\s+((?:19|20)\d\d\s+)()" + EscapeRegex(name) +
+                        R"(\b[a-z0-9 -]{0,30}?)(?=\s+(?:was|were|had|is)\b))");
+      smatch im;
+      if (std::regex_search(s, im, intro)) {
+        s = im.prefix().str() + "v" + *numbers.begin() + ", a " + im[1].str() + im[2].str() + "," + im.suffix().str();
+      }
+    }
+  }
   return s;
 }
 

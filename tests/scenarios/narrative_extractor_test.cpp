@@ -3279,5 +3279,23 @@ TEST(NarrativeExtractorTest, WhatADriverThoughtTheOtherWasDoingIsNotHisOwnMoveme
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
 }
+
+TEST(NarrativeExtractorTest, VehiclesIntroducedByMakeAndNumberedLater) {
+  // "A 2005 Chevrolet Malibu was northbound ..., stopped at the stop sign";
+  // only later "the driver of the Chevrolet (Vehicle 1)": the Malibu is V1,
+  // with its stop and its road.
+  const AccidentRecord r = kExtractor.Extract(
+      "A northbound two-lane side street, posted at 48 km/h (30 mph), ends at an east/west five-lane roadway "
+      "posted at 72 km/h (45 mph). A 2005 Chevrolet Malibu was northbound on the side street, stopped at the "
+      "stop sign, and then began a left turn to travel west. A 2002 Ford Crown Victoria was eastbound in the "
+      "right curb lane of the five-lane roadway. The front of the Ford struck the left side of the Chevrolet. "
+      "The driver of the Chevrolet (Vehicle 1), a belted 29-year-old female, sustained minor injuries. The "
+      "driver of the Ford (Vehicle 2), a belted 61-year-old male, was not injured.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  EXPECT_NEAR(r.road.speed_limit_mps.value * 3.6, 48.0, 0.5);
+}
 }  // namespace
 }  // namespace accsim
