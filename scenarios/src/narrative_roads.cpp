@@ -536,6 +536,11 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       rs.sentence = i;
       rs.pos = pos;
       rs.owner = OwnerAt(s, pos);
+      // The road V1's meets is not V1's: "v1 was eastbound on a residential
+      // street and stopped where the street meets a busy 4-lane roadway".
+      static const regex kMetRoad(
+          R"(\b(?:meets?|meeting|intersects?|intersecting|crosses|joins|ends at|ending at|tees into)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}$)");
+      if (rs.owner > 0 && Has(Before(s.text, pos, 40), kMetRoad)) rs.owner = 0;
       const size_t from = pos > 60 ? pos - 60 : 0;
       const string around = s.text.substr(from, pos - from + static_cast<size_t>(m.length(0)) + 40);
       // The road's axis: named up to the count ("an east-west roadway with
@@ -644,7 +649,8 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       const string before = s.text.substr(0, static_cast<size_t>(it->position()));
       static const regex kNotARoadAfter(R"(^\s*(?:to the|of the|lines?))");
       if (Has(after, kNotARoadAfter)) continue;
-      static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over)\s+(?:the\s+)?$)");
+      // ("in the other 2 lanes": lanes, not the road's count.)
+      static const regex kNotARoadBefore(R"(\b(?:crossing|across|all|over|other|remaining)\s+(?:the\s+)?$)");
       if (Has(before.substr(before.size() > 12 ? before.size() - 12 : 0), kNotARoadBefore)) continue;
       // Nor what the road was elsewhere: "200 meters west the road had been
       // a 4-lane section", "widened from 1 lane to 2 lanes".
@@ -1009,8 +1015,12 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
       if (!v1s_direction && !per_told->centre && junction &&
           std::regex_search(told.cbegin() + static_cast<std::ptrdiff_t>(std::min(per_told->pos, told.size())),
                             told.cend(), bm, kBayOnEachApproach)) {
+        // (Across an undivided road at V1's approach: its own through lanes
+        // and bay, and the other side's through lanes leaving the junction;
+        // bays in a median: each side's.)
+        static const regex kMedian(R"(\bmedian\b|\bdivided\b)");
+        total = 2 * per + (Has(told, kMedian) ? 2 : 1);
         per += 1;
-        total = 2 * per;
       }
       r.road.lanes_per_direction.Set(v1s_direction ? directional : per, Provenance::kStated);
       if (v1s_direction && total < directional + per) {
@@ -1452,7 +1462,16 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
   if (!pick && !v1_named_road.empty()) {
     pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.name == v1_named_road; });
   }
-  if (!pick && distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.road == v1_road; });
+  // (By its kind, with or without a qualifier: "the arterial" is V1's "city
+  // arterial".)
+  auto same_road = [&](const string& road) {
+    auto qualifies = [](const string& longer, const string& shorter) {
+      return longer.size() > shorter.size() &&
+             longer.compare(longer.size() - shorter.size() - 1, string::npos, " " + shorter) == 0;
+    };
+    return road == v1_road || (!road.empty() && !GenericRoad(road) && (qualifies(v1_road, road) || qualifies(road, v1_road)));
+  };
+  if (!pick && distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && same_road(l.road); });
   if (!pick && v1_axis >= 0) {
     pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.axis && *l.axis == v1_axis; });
   }

@@ -3297,5 +3297,44 @@ TEST(NarrativeExtractorTest, VehiclesIntroducedByMakeAndNumberedLater) {
   EXPECT_EQ(r.road.lanes_total.value, 2);
   EXPECT_NEAR(r.road.speed_limit_mps.value * 3.6, 48.0, 0.5);
 }
+
+TEST(NarrativeExtractorTest, RoadsV1MeetsBaysAtItsApproachAndLimitsByKind) {
+  // An undivided road with "one through lane in each direction and a
+  // left-turn lane for each approach": three lanes across V1's approach.
+  EXPECT_EQ(kExtractor
+                .Extract("V1 was traveling west on a three-lane, two-way roadway. The roadway had one through lane "
+                         "in each direction and a left-turn lane for each approach at the signalized four-way "
+                         "intersection. V1 was stopped in the westbound left-turn lane. V2 was traveling east. V1 "
+                         "turned left and the front of V2 struck the right side of V1.")
+                .road.lanes_total.value,
+            3);
+  // "... stopped where the street meets a busy four-lane roadway": the
+  // four lanes are the other road's; V1's street is "a two-lane road".
+  EXPECT_EQ(kExtractor
+                .Extract("V1 was eastbound on a narrow residential street and came to a stop at a stop sign where "
+                         "the street meets a busy four-lane roadway. V2 was southbound on the four-lane roadway. "
+                         "The residential street is a two-lane road posted at 40 kmh (25 mph). V1 pulled out and "
+                         "the front of V2 impacted the left side of V1.")
+                .road.lanes_total.value,
+            2);
+  // "stopped beside her in the other two lanes" counts no road; "three
+  // lanes in each direction" does.
+  EXPECT_EQ(kExtractor
+                .Extract("V2 had stopped in the middle lane for a red signal. Several vehicles were stopped beside "
+                         "her in the other two lanes. V1 was southbound behind V2 and the front of V1 struck the "
+                         "back of V2. The highway at this location is divided by a raised grass median, with three "
+                         "lanes in each direction.")
+                .road.lanes_per_direction.value,
+            3);
+  // "the arterial carried a posted limit of 56 km/h", V1 on the "city
+  // arterial": its limit, not the collector's.
+  EXPECT_NEAR(kExtractor
+                      .Extract("V1 was westbound on a city arterial approaching a collector street. The collector "
+                               "was posted at 48 km/h (30 mph), while the arterial carried a posted limit of 56 "
+                               "km/h (35 mph). V2 was northbound on the collector. The front of V1 struck the "
+                               "left side of V2.")
+                      .road.speed_limit_mps.value * 3.6,
+              56.0, 0.5);
+}
 }  // namespace
 }  // namespace accsim
