@@ -155,6 +155,9 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_aq", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
         {"collision_location", 0.95}, {"driving_actions", 0.90}, {"crash_type", 0.92}}},
+      {"nmvccs_style_as", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
+        {"collision_location", 0.95}, {"driving_actions", 0.87}, {"crash_type", 0.95}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
