@@ -42,6 +42,17 @@ struct RoadStatement {
 // "the road", "the roadway", "the street" name no road in particular.
 bool GenericRoad(const string& road) { return road == "road" || road == "roadway" || road == "street"; }
 
+// The same road by its kind, with or without a qualifier: "the arterial"
+// is the "city arterial".
+bool SameRoad(const string& a, const string& b) {
+  auto qualifies = [](const string& longer, const string& shorter) {
+    return longer.size() > shorter.size() &&
+           longer.compare(longer.size() - shorter.size() - 1, string::npos, " " + shorter) == 0;
+  };
+  return a == b || (!a.empty() && !b.empty() && !GenericRoad(a) && !GenericRoad(b) &&
+                    (qualifies(a, b) || qualifies(b, a)));
+}
+
 // Two roads named by kinds that differ ("highway", "county road"), neither
 // generic nor one within the other.
 bool OtherKindsOfRoad(const string& a, const string& b) {
@@ -758,10 +769,6 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   const std::vector<Sentence>& sentences = rd.sentences;
   const std::vector<Segment>& segments = rd.segments;
   const string& scene = rd.scene;
-  const int v1_axis = ctx.v1_axis;
-  const string& v1_road = ctx.v1_road;
-  const string& v1_named_road = ctx.v1_named_road;
-  const bool distinctive = ctx.distinctive;
   V1Lanes choice;
   // V1's road: stated in V1's own segment, else the road on V1's axis, else
   // the first road not tied to another vehicle (the crash road is
@@ -833,39 +840,39 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
     r.road.lanes_per_direction.Set(1, Provenance::kInferred);
   }
   if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
-  if (!best && v1_way <= 0 && !v1_named_road.empty()) {
-    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.name == v1_named_road; });
+  if (!best && v1_way <= 0 && !ctx.v1_named_road.empty()) {
+    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.name == ctx.v1_named_road; });
   }
-  if (!best && v1_way <= 0 && distinctive) {
-    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.road == v1_road; });
+  if (!best && v1_way <= 0 && ctx.distinctive) {
+    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && SameRoad(rs.road, ctx.v1_road); });
   }
   // "... between a four-lane divided highway and a two lane county road.
   // v1 was westbound on the county road": the count its own noun phrase
   // names.
-  if (!best && v1_way <= 0 && distinctive) {
-    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.road.empty() && rs.counted == v1_road; });
+  if (!best && v1_way <= 0 && ctx.distinctive) {
+    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.road.empty() && rs.counted == ctx.v1_road; });
   }
-  if (!best && v1_way <= 0 && v1_axis >= 0) {
-    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == v1_axis; });
+  if (!best && v1_way <= 0 && ctx.v1_axis >= 0) {
+    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == ctx.v1_axis; });
   }
   if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
   if (!best && v1_way <= 0 && !roads.empty()) best = &roads.front();
   // V1 travelling across the axis of the road described as the through
   // road came from the cross street, when the report describes one.
-  if (best && !best->cross && v1_axis >= 0) {
+  if (best && !best->cross && ctx.v1_axis >= 0) {
     const RoadStatement* through = pick([](const RoadStatement& rs) { return !rs.cross && rs.axis.has_value(); });
     const RoadStatement* cross = pick([&](const RoadStatement& rs) {
-      return rs.cross && rs.owner <= 1 && (!rs.axis || *rs.axis == v1_axis);
+      return rs.cross && rs.owner <= 1 && (!rs.axis || *rs.axis == ctx.v1_axis);
     });
-    if (through && cross && *through->axis != v1_axis && (!best->axis || *best->axis != v1_axis)) best = cross;
+    if (through && cross && *through->axis != ctx.v1_axis && (!best->axis || *best->axis != ctx.v1_axis)) best = cross;
   }
   // At a junction, V1 travelling across every road the report counts
   // lanes of was on one it does not describe: an ordinary two-lane,
   // two-way road.
   const bool junction = AtJunction(r);
-  if (best && junction && v1_axis >= 0 && best->owner != 1 &&
+  if (best && junction && ctx.v1_axis >= 0 && best->owner != 1 &&
       std::all_of(roads.begin(), roads.end(), [&](const RoadStatement& rs) {
-        return rs.axis && *rs.axis != v1_axis && !rs.cross && rs.owner != 1;
+        return rs.axis && *rs.axis != ctx.v1_axis && !rs.cross && rs.owner != 1;
       })) {
     r.road.lanes_total.Set(2, Provenance::kInferred);
     r.road.lanes_per_direction.Set(1, Provenance::kInferred);
@@ -885,7 +892,6 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
   AccidentRecord& r = rd.r;
   const std::vector<Sentence>& sentences = rd.sentences;
   const string& scene = rd.scene;
-  const int v1_axis = ctx.v1_axis;
   const bool junction = AtJunction(r);
   const RoadStatement* best = choice.best;
   const int v1_way = choice.v1_way;
@@ -935,7 +941,7 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
                            !Has(told.substr(std::min(told.size(), rs.pos)), kAnotherJunction);
       const size_t reach = (of_v1s_direction(rs) && rs.directional) || widened ? 2 : 1;
       if (rs.sentence > best->sentence + reach || rs.sentence + 1 < best->sentence) continue;
-      if (!best->axis && rs.axis && v1_axis >= 0 && *rs.axis != v1_axis) continue;  // a road across V1's course
+      if (!best->axis && rs.axis && ctx.v1_axis >= 0 && *rs.axis != ctx.v1_axis) continue;  // a road across V1's course
       if (!rs.road.empty() && !best->road.empty() && rs.road != best->road) continue;
       if (OfAnotherRoad(rs, *best)) continue;
       // ... or one whose own noun names another road than best's clause
@@ -1057,10 +1063,6 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
 void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadStatement>& roads, const RoadStatement* best) {
   AccidentRecord& r = rd.r;
   const std::vector<Sentence>& sentences = rd.sentences;
-  const int v1_axis = ctx.v1_axis;
-  const string& v1_road = ctx.v1_road;
-  const string& v1_named_road = ctx.v1_named_road;
-  const bool distinctive = ctx.distinctive;
   const bool junction = AtJunction(r);
   // "divided by two solid yellow lines" is paint, not a divided road; a
   // freeway counts when the crash is on it, not "a nearby interstate".
@@ -1106,7 +1108,7 @@ void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadSta
     // road: the word names another kind of road.
     static const regex kQualifiedRoad(
         R"(^(?:county|state|rural|city|residential|side|cross|access|service|frontage)\s|^crossroad$)");
-    if (distinctive && Has(v1_road, kQualifiedRoad)) {
+    if (ctx.distinctive && Has(ctx.v1_road, kQualifiedRoad)) {
       static const regex kNounAfter(R"(^\s*(?:[\w-]+\s+){0,2}?)" + RoadNoun() + R"(\b)");
       // (The word may hold its noun: "of a 6-lane, divided, limited access
       // interstate".)
@@ -1114,7 +1116,7 @@ void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadSta
       const string said = dm.str();
       const string after = cleaned.substr(at + static_cast<size_t>(dm.length()));
       if ((std::regex_search(said, nm, RoadWord()) || std::regex_search(after, nm, kNounAfter)) &&
-          v1_road.find(nm[1].str()) == string::npos) {
+          ctx.v1_road.find(nm[1].str()) == string::npos) {
         return false;
       }
     }
@@ -1125,10 +1127,10 @@ void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadSta
     // "a 4-lane divided u.s. route and a 2-lane township road", V1 on the
     // township road: the phrase names another road than V1's named one
     // (unless in apposition to it: "route 9, a divided highway").
-    if (!v1_named_road.empty()) {
-      const size_t name_at = cleaned.find(v1_named_road);
+    if (!ctx.v1_named_road.empty()) {
+      const size_t name_at = cleaned.find(ctx.v1_named_road);
       if (name_at != string::npos && Has(phrase, RoadWord())) {
-        const size_t name_end = name_at + v1_named_road.size();
+        const size_t name_end = name_at + ctx.v1_named_road.size();
         const bool in_phrase = name_at >= from && name_at < from + phrase.size();
         static const regex kApposition(R"(^\s*,\s*$)");
         const bool appositive = name_end <= from && Has(cleaned.substr(name_end, from - name_end), kApposition);
@@ -1137,15 +1139,15 @@ void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadSta
     }
     // "a four-lane divided boulevard and a two-lane undivided city
     // street", V1 on the boulevard: the word is the other road's.
-    if (distinctive && phrase.find(v1_road) == string::npos) {
-      const size_t v1_at = cleaned.find(v1_road);
+    if (ctx.distinctive && phrase.find(ctx.v1_road) == string::npos) {
+      const size_t v1_at = cleaned.find(ctx.v1_road);
       const bool before_and = v1_at != string::npos && v1_at < from && cleaned.compare(from, 4, "and ") == 0;
       const bool after_and = v1_at != string::npos && v1_at >= from + phrase.size() && next != string::npos;
       if ((before_and || after_and) && Has(phrase, RoadWord())) return false;
     }
     std::optional<int> axis = AxisIn(phrase);
     if (!axis) axis = AxisIn(s.text);
-    return !(junction && v1_axis >= 0 && axis && *axis != v1_axis);
+    return !(junction && ctx.v1_axis >= 0 && axis && *axis != ctx.v1_axis);
   };
   bool divided = false, undivided = false;
   for (const Sentence& s : sentences) {
@@ -1289,10 +1291,6 @@ void ReadConditions(Reading& rd) {
 void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
   AccidentRecord& r = rd.r;
   const std::vector<Sentence>& sentences = rd.sentences;
-  const int v1_axis = ctx.v1_axis;
-  const string& v1_road = ctx.v1_road;
-  const string& v1_named_road = ctx.v1_named_road;
-  const bool distinctive = ctx.distinctive;
   struct Limit {
     double mps;
     string unit;
@@ -1452,31 +1450,22 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     return nullptr;
   };
   if (std::getenv("ACCSIM_DEBUG_ROADS")) {
-    std::fprintf(stderr, "[v1 named road: %s] [v1 road: %s]\n", v1_named_road.c_str(), v1_road.c_str());
+    std::fprintf(stderr, "[v1 named road: %s] [v1 road: %s]\n", ctx.v1_named_road.c_str(), ctx.v1_road.c_str());
     for (const auto& l : limits) {
       std::fprintf(stderr, "[limit %.1f kmh owner%d axis%d road '%s' name '%s']\n", l.mps * 3.6, l.owner,
                    l.axis ? *l.axis : -1, l.road.c_str(), l.name.c_str());
     }
   }
   const Limit* pick = first_limit([](const Limit& l) { return l.owner == 1; });
-  if (!pick && !v1_named_road.empty()) {
-    pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.name == v1_named_road; });
+  if (!pick && !ctx.v1_named_road.empty()) {
+    pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.name == ctx.v1_named_road; });
   }
-  // (By its kind, with or without a qualifier: "the arterial" is V1's "city
-  // arterial".)
-  auto same_road = [&](const string& road) {
-    auto qualifies = [](const string& longer, const string& shorter) {
-      return longer.size() > shorter.size() &&
-             longer.compare(longer.size() - shorter.size() - 1, string::npos, " " + shorter) == 0;
-    };
-    return road == v1_road || (!road.empty() && !GenericRoad(road) && (qualifies(v1_road, road) || qualifies(road, v1_road)));
-  };
-  if (!pick && distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && same_road(l.road); });
-  if (!pick && v1_axis >= 0) {
-    pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.axis && *l.axis == v1_axis; });
+  if (!pick && ctx.distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && SameRoad(l.road, ctx.v1_road); });
+  if (!pick && ctx.v1_axis >= 0) {
+    pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.axis && *l.axis == ctx.v1_axis; });
   }
   // A limit said of a road across V1's course is the other road's.
-  if (!pick && v1_axis >= 0) pick = first_limit([](const Limit& l) { return l.owner <= 1 && !l.axis; });
+  if (!pick && ctx.v1_axis >= 0) pick = first_limit([](const Limit& l) { return l.owner <= 1 && !l.axis; });
   if (!pick) pick = first_limit([](const Limit& l) { return l.owner <= 1; });
   if (!pick && !limits.empty()) pick = &limits.front();
   if (pick) {
