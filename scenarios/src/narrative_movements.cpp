@@ -138,7 +138,10 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // A lane change told as long past is not the pre-crash movement ("his
   // turn signal was still on from moving into the right lane a block earlier").
   static const regex kEarlierMove(
-      R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b)");
+      R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b|)"
+      // Told in the past perfect it is background ("had entered the highway
+      // ... and had moved over into the middle lane"), unless it was "just".
+      R"(\bhad\s+(?!just\b|only\b)(?:\w+\s+)?(?:moved|changed|merged|pulled)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?(?:[\w-]+\s+){0,3}?lane\b|\bhad\s+(?!just\b|only\b)(?:\w+\s+)?changed\s+lanes\b)");
   // Nor one only meant: "had looked over his shoulder to change lanes and
   // did not see that traffic had stopped", "was checking his mirror before
   // changing lanes".

@@ -3336,5 +3336,21 @@ TEST(NarrativeExtractorTest, RoadsV1MeetsBaysAtItsApproachAndLimitsByKind) {
                       .road.speed_limit_mps.value * 3.6,
               56.0, 0.5);
 }
+TEST(NarrativeExtractorTest, ALaneChangeToldInThePastPerfectIsBackground) {
+  // "had entered the highway ... and had moved over into the middle lane,
+  // traveling behind" it: long done when it struck the stopped car.
+  const AccidentRecord earlier = kExtractor.Extract(
+      "V2 was stopped in the middle of three southbound lanes for a red signal. V1 had entered the same "
+      "highway from a shopping center about a half mile to the north and had moved over into the middle "
+      "lane, traveling behind V2. The front of V1 struck the back of V2.");
+  ASSERT_EQ(earlier.vehicles.size(), 2u);
+  EXPECT_EQ(earlier.vehicles[0].pre_event.value, Movement::kStraight);
+  // "had just moved into the left lane" is the manoeuvre into the crash.
+  const AccidentRecord just = kExtractor.Extract(
+      "V1 and V2 were traveling south on a four-lane divided highway. V1 had just moved into the left lane "
+      "when the right side of V1 contacted the left side of V2.");
+  ASSERT_EQ(just.vehicles.size(), 2u);
+  EXPECT_EQ(just.vehicles[0].movement.value, Movement::kChangingLanes);
+}
 }  // namespace
 }  // namespace accsim
