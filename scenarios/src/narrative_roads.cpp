@@ -672,9 +672,10 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       // eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
       // ("2 through lanes and a left-turn bay").
       static const regex kDirectionSubject(
-          R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+          R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:of\s+the\s+(?:[\w-]+\s+){0,2}?(?:roadway|road|street|highway|avenue|boulevard|arterial)\s+)?(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+      // ("2 through lanes and 2 left-turn lanes at the intersection": 4.)
       static const regex kBayAfter(
-          R"(^\s+(?:through\s+|travel\s+)?lanes?\s*,?\s+(?:and|plus)\s+(?:a|an|1)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bay|lane)\b|^\s+(?:and|plus)\s+(?:a|an|1)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bay|lane)\b)");
+          R"(^\s+(?:through\s+|travel\s+)?lanes?\s*,?\s+(?:and|plus)\s+(a|an|\d)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bays?|lanes?)\b|^\s+(?:and|plus)\s+(a|an|\d)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bays?|lanes?)\b)");
       const int n = std::stoi((*it)[1].str());
       smatch dm;
       const string near_before = before.substr(before.size() > 120 ? before.size() - 120 : 0);
@@ -694,8 +695,12 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
           // through lanes").
           static const regex kBayBefore(
               R"(\bturn\s+(?:lane|bay)\s+(?:and|plus)\s+$|\bturn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+$)");
-          const bool bay = Has(after, kBayAfter) || Has(subject, kBayBefore);
-          add(*it, static_cast<size_t>(it->position()), 0, 0, n + (bay ? 1 : 0));
+          int bays = Has(subject, kBayBefore) ? 1 : 0;
+          if (smatch bm; std::regex_search(after, bm, kBayAfter)) {
+            const string k = bm[1].matched ? bm[1].str() : bm[2].str();
+            bays = std::isdigit(static_cast<unsigned char>(k[0])) ? std::stoi(k) : 1;
+          }
+          add(*it, static_cast<size_t>(it->position()), 0, 0, n + bays);
           roads.back().bound = bound;
         }
         continue;

@@ -3352,5 +3352,17 @@ TEST(NarrativeExtractorTest, ALaneChangeToldInThePastPerfectIsBackground) {
   ASSERT_EQ(just.vehicles.size(), 2u);
   EXPECT_EQ(just.vehicles[0].movement.value, Movement::kChangingLanes);
 }
+TEST(NarrativeExtractorTest, OneSideOfADividedRoadWithItsTurnLanesCounted) {
+  // "The northbound side of the divided roadway had two through lanes and
+  // two left-turn lanes at the intersection": four lanes on V1's side.
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred in the intersection of a north/south divided roadway and an east/west two-way "
+      "roadway. The northbound side of the divided roadway had two through lanes and two left-turn lanes at "
+      "the intersection and was separated from the southbound side by a raised grass median. V1 was "
+      "northbound turning left from the inside left-turn lane. V2 was northbound turning left from the "
+      "outside left-turn lane. The right front of V1 contacted the left side of V2.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 4);
+}
 }  // namespace
 }  // namespace accsim
