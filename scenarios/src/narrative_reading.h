@@ -116,7 +116,7 @@ struct MovementEvidence {
   bool turn_meant = false;  // a turn meant, its direction untold ("slowing to turn into the driveway")
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
-           back || pass || slowing;
+           back || pass || slowing || straight || in_curve;
   }
 };
 

@@ -3364,5 +3364,17 @@ TEST(NarrativeExtractorTest, OneSideOfADividedRoadWithItsTurnLanesCounted) {
   EXPECT_TRUE(r.road.divided.value);
   EXPECT_EQ(r.road.lanes_per_direction.value, 4);
 }
+TEST(NarrativeExtractorTest, TheNarrativesWayOfGoingBeatsTheDriversStatement) {
+  // The narrative has V2 "negotiating the same curve"; its driver's "he
+  // slowed ... because he knew the curve ices up" came before and is not
+  // what the narrative tells.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was westbound on a two-lane, two-way rural highway negotiating a curve to the left. V2 was "
+      "eastbound negotiating the same curve to the right. V1 lost traction on the ice, slid across the "
+      "centerline, and the front of V1 struck the front of V2. The driver of V2 was a 50-year old male who "
+      "reported he slowed to about 56 kmph (35 mph) because he knew the curve ices up.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
