@@ -141,6 +141,8 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\b(?:moving|moved|changing|changed|merging|merged)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?\w+\s+lane\s+(?:a\s+(?:block|mile|while|few\s+\w+)|(?:\w+\s+)?(?:blocks|miles|minutes))\s+(?:earlier|before|back|ago)\b|)"
       // Told in the past perfect it is background ("had entered the highway
       // ... and had moved over into the middle lane"), unless it was "just".
+      // "left his signal on from an earlier lane change".
+      R"(\b(?:an?|the|his|her|its)\s+(?:earlier|previous|prior)\s+lane change\b|)"
       R"(\bhad\s+(?!just\b|only\b)(?:\w+\s+)?(?:moved|changed|merged|pulled)\s+(?:over\s+)?(?:into|to)\s+(?:the\s+)?(?:[\w-]+\s+){0,3}?lane\b|\bhad\s+(?!just\b|only\b)(?:\w+\s+)?changed\s+lanes\b)");
   // Nor one only meant: "had looked over his shoulder to change lanes and
   // did not see that traffic had stopped", "was checking his mirror before

@@ -3351,6 +3351,13 @@ TEST(NarrativeExtractorTest, ALaneChangeToldInThePastPerfectIsBackground) {
       "when the right side of V1 contacted the left side of V2.");
   ASSERT_EQ(just.vehicles.size(), 2u);
   EXPECT_EQ(just.vehicles[0].movement.value, Movement::kChangingLanes);
+  // "he may have left his signal on from an earlier lane change".
+  const AccidentRecord signal = kExtractor.Extract(
+      "V1 was northbound in the center turn lane and turned left toward the side street. V2 was southbound "
+      "in lane one. The front of V2 struck the right side of V1. The driver of V2 said he may have left his "
+      "signal on from an earlier lane change, and that he was going straight.");
+  ASSERT_EQ(signal.vehicles.size(), 2u);
+  EXPECT_EQ(signal.vehicles[1].movement.value, Movement::kStraight);
 }
 TEST(NarrativeExtractorTest, OneSideOfADividedRoadWithItsTurnLanesCounted) {
   // "The northbound side of the divided roadway had two through lanes and
