@@ -1429,13 +1429,18 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
         R"(\b(\d{2,3})\s*(kmh|mph)\s+(?:(?!(?:on|in|along|down|up|at|when|while|as|and|through|into|onto|toward|towards|near|before|after|from|of|with)\b)[\w-]+\s+){0,3}?(?:road|roadway|street|highway|avenue|boulevard|route|zone|stretch|section|freeway|interstate|carriageway)\b)");
     static const regex kRoadSubject(
         R"(^(?:the\s+)?(?:[\w-]+\s+){0,3}?(?:road|roadway|street|highway|avenue|boulevard|route|freeway|interstate|carriageway|rdwy|st|ave|rd|dr)\s+(?:is|was)\b[^.]*?\b(\d{2,3})\s*(kmh|mph)\b)");
+    // ... or closes an item of a terse list about the road ("two
+    // residential streets, both two-lane two-way, straight and level, 25 mph").
+    static const regex kRoadListValue(
+        R"(\b(?:roads?|roadways?|streets?|highways?|intersection|lanes?|two-way|level|straight|curve\w*)\b[^.]{0,80}?,\s*(\d{2,3})\s*(kmh|mph)\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:[,;]|$))");
     static const regex kTravelWord(
         R"(\b(?:travel\w*|going|driving|doing|moving|speed|estimated|approximately|about|around|between|at)\s+(?:\w+\s+){0,2}$)");
     for (const Sentence& s : sentences) {
       if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
       smatch m;
       const bool subject = std::regex_search(s.text, m, kRoadSubject) && s.refs.empty();
-      if (!subject && !std::regex_search(s.text, m, kRoadValue)) continue;
+      const bool listed = !subject && s.refs.empty() && std::regex_search(s.text, m, kRoadListValue);
+      if (!subject && !listed && !std::regex_search(s.text, m, kRoadValue)) continue;
       const size_t pos = static_cast<size_t>(m.position(1));
       if (Has(Before(s.text, pos, 30), kTravelWord)) continue;
       const double value = std::stod(m[1].str());

@@ -3383,5 +3383,17 @@ TEST(NarrativeExtractorTest, TheNarrativesWayOfGoingBeatsTheDriversStatement) {
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, ALimitThatClosesATerseListAboutTheRoad) {
+  // "..., straight and level, 25 mph.": the road's limit, said without the
+  // word; a speed in a vehicle's own sentence is not.
+  const AccidentRecord r = kExtractor.Extract(
+      "Uncontrolled intersection of two residential streets, both two-lane two-way, straight and level, 35 "
+      "mph. V1 southbound; V2 westbound. Front of V2 struck left side of V1 in the intersection.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value / 0.44704, 35.0, 0.01);
+  const AccidentRecord speed = kExtractor.Extract(
+      "Intersection of two residential streets, straight and level. V1 southbound, straight, 40 mph. V2 "
+      "westbound. Front of V2 struck left side of V1.");
+  EXPECT_NE(speed.road.speed_limit_mps.value / 0.44704, 40.0);
+}
 }  // namespace
 }  // namespace accsim
