@@ -20,6 +20,13 @@ using regex_text::ReplaceWith;
 
 namespace {
 
+// A turn coded as a critical event: "this vehicle traveling, turning left at
+// intersection", "when he began to turn right".
+const regex& CodedTurn() {
+  static const regex kTurning(R"(\bturning (?:left|right) at (?:the |an )?intersection|\b(?:began|begin|started) to turn (?:left|right))");
+  return kTurning;
+}
+
 // crossing street, turning into opposite direction"), name the configuration
 // the investigators coded. Pairs of events map to crash-type categories:
 // turning into a direction -> turn into path; a turn against traffic from the
@@ -28,10 +35,9 @@ namespace {
 // into path when one of them turned); an adjacent lane -> sideswipe same
 // direction; the opposite direction -> head-on or sideswipe by the damage.
 std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, bool right_turner, bool lane_change,
-                                             bool front_to_front) {
+                                             bool front_to_front, bool parallel_turns) {
   static const regex kNotInvolved(R"(\bnot involved (?:in )?(?:the )?1st harmful)");  // "first" is normalised to "1st"
   static const regex kIntoPath(R"(\bturning into (?:the )?(?:same|opposite|oppsite) direction)");
-  static const regex kTurning(R"(\bturning (?:left|right) at (?:the |an )?intersection|\b(?:began|begin|started) to turn (?:left|right))");
   static const regex kTurningRight(R"(\bturning right at|\bbegan to turn right)");
   static const regex kFromOpposite(R"(\bfrom (?:the )?opposite direction|\b(?:traveling|travelling) in (?:the )?opposite direction)");
   static const regex kAdjacent(
@@ -41,13 +47,19 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
   static const regex kCrossingPaths(R"(\bcrossing street,? across\b)");
   if (Has(coded, kNotInvolved)) return CrashType::kSingleVehicle;
   if (Has(coded, kIntoPath)) return CrashType::kTurnIntoPath;
-  const bool turning = turner || Has(coded, kTurning);
+  const bool turning = turner || Has(coded, CodedTurn());
   // A right turn does not cross the opposite lane: one struck by an
   // oncoming vehicle over its left lane line is no turn across path (every
   // 68/69 of the development set is a left turn).
-  const bool across = (turner && !right_turner) || (!turner && Has(coded, kTurning) && !Has(coded, kTurningRight));
+  const bool across = (turner && !right_turner) || (!turner && Has(coded, CodedTurn()) && !Has(coded, kTurningRight));
   if (Has(coded, kFromOpposite) && across) return CrashType::kTurnAcrossPath;
-  if (Has(coded, kAdjacent) && ((turner && !lane_change) || Has(coded, kTurningRight))) return CrashType::kTurnAcrossPath;
+  // Two vehicles turning the same way side by side (a double turn lane),
+  // one drifting over the line between them, sideswipe.
+  // (Not a turn coded as the critical event: that one turned across.)
+  const bool side_by_side = parallel_turns && !Has(coded, CodedTurn());
+  if (Has(coded, kAdjacent) && !side_by_side && ((turner && !lane_change) || Has(coded, kTurningRight))) {
+    return CrashType::kTurnAcrossPath;
+  }
   if (Has(coded, kRearEnd)) return CrashType::kRearEnd;
   if (Has(coded, kCrossingPaths)) return turning ? CrashType::kTurnIntoPath : CrashType::kAngle;
   if (Has(coded, kAdjacent)) return CrashType::kSideswipeSame;
@@ -408,7 +420,8 @@ void ClassifyCrash(Reading& rd) {
                                 r.road.kind.value == RoadKind::kTJunction || RanTrafficControl(scene) || from_driveway;
     if (const auto from_coding =
             CrashTypeFromCoding(coded, turner != nullptr, turner && turner->movement.value == Movement::kTurnRight,
-                                Has(impact_text, kLaneChangeNow), front_to_front)) {
+                                Has(impact_text, kLaneChangeNow), front_to_front,
+                                a_turn && b_turn && a->movement.value == b->movement.value && !opposite)) {
       type = *from_coding;
       type_src = Provenance::kStated;
     } else if (Has(impact_text, RearEndPhrase())) {
@@ -492,6 +505,12 @@ void ClassifyCrash(Reading& rd) {
     const MovementEvidence& told = narrative[i + 1];
     const bool about_to_turn = Turning(v.movement.value) || told.intent_left || told.intent_right || told.turn_meant;
     if (!about_to_turn || told.coded_turn_left || told.coded_turn_right || told.coded_straight) continue;
+    // Not when the other turned the same way beside it (a double turn lane).
+    const bool side_by_side =
+        !Has(coded, CodedTurn()) && std::any_of(r.vehicles.begin(), r.vehicles.end(), [&](const VehicleRecord& o) {
+          return &o != &v && Turning(o.movement.value) && o.movement.value == v.movement.value;
+        });
+    if (side_by_side) continue;
     bool passed = told.coded_adjacent;
     for (size_t j = 0; j < r.vehicles.size(); ++j) {
       const VehicleRecord& o = r.vehicles[j];

@@ -3395,5 +3395,20 @@ TEST(NarrativeExtractorTest, ALimitThatClosesATerseListAboutTheRoad) {
       "westbound. Front of V2 struck left side of V1.");
   EXPECT_NE(speed.road.speed_limit_mps.value / 0.44704, 40.0);
 }
+TEST(NarrativeExtractorTest, TwoVehiclesTurningSideBySideSideswipe) {
+  // A double left-turn lane: V1 drifts right into V2 in the middle of the
+  // turn. Both were turning; the crash is a same-direction sideswipe.
+  const AccidentRecord r = kExtractor.Extract(
+      "The northbound side of the divided roadway had two through lanes and two left-turn lanes at the "
+      "intersection. Vehicle # 1 was turning left from the inside left-turn lane on a green arrow. Vehicle # 2 "
+      "was turning left from the outside left-turn lane. During the turn Vehicle # 1 drifted to the right out "
+      "of its turning path and its right front contacted the left side of Vehicle # 2. The Critical Pre-crash "
+      "Event for Vehicle # 1 was coded as this vehicle traveling over the lane line on the right side of travel "
+      "lane. The Critical Pre-crash Event for Vehicle # 2 was coded as other vehicle encroachment from adjacent "
+      "lane (same direction) over the left lane line.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kTurnLeft);
+}
 }  // namespace
 }  // namespace accsim
