@@ -367,7 +367,10 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|)"
+      // ... nor the driver's age as the subject of the vehicle's movement
+      // ("its 58-year-old driver stopped at the stop sign and began a right turn").
+      R"(\b(?:the|its|his|her)\s+\d+[- ]year[- ]old\s+(?:male\s+|female\s+)?(?:driver|operator)\s+(?=(?:then\s+)?(?:stopped|began|started|turned|pulled|slowed|braked|backed|accelerated|entered|proceeded|attempted|drove|steered|swerved|merged|changed|failed|did not|was (?:traveling|driving|going|stopped|slowing|turning|backing|attempting))\b)|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;

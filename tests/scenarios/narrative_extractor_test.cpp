@@ -3410,5 +3410,18 @@ TEST(NarrativeExtractorTest, TwoVehiclesTurningSideBySideSideswipe) {
   EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeSame);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kTurnLeft);
 }
+TEST(NarrativeExtractorTest, TheDriversAgeAsSubjectOfTheMovementKeepsTheSentence) {
+  // "Its 58-year-old driver stopped at the stop sign and began a right
+  // turn": the truck's movement, not a sentence about people.
+  const AccidentRecord r = kExtractor.Extract(
+      "A 2001 Chevrolet Cavalier (V1, the case vehicle) was westbound on a two-lane state highway approaching "
+      "its T-intersection with a township road. V2, a 1993 International dump truck, was southbound on the "
+      "township road. Its 58-year-old driver stopped at the stop sign and began a right turn to go west on "
+      "the highway. While the truck was still angled across the westbound lane, the front of V1 struck the "
+      "left rear corner of V2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
+}
 }  // namespace
 }  // namespace accsim
