@@ -3423,5 +3423,16 @@ TEST(NarrativeExtractorTest, TheDriversAgeAsSubjectOfTheMovementKeepsTheSentence
   EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnRight);
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
 }
+TEST(NarrativeExtractorTest, AThingParkedNearAVehicleIsNotThatVehicleParked) {
+  // "A landscaping trailer parked at the south curb ... limited the V2
+  // driver's view": V2 was backing out of a driveway, not parked.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was eastbound on a residential street. V2, a 1995 Ford F-250 pickup truck, was backing out of a "
+      "private residential driveway on the south side of the street. A landscaping trailer parked at the "
+      "south curb just west of the driveway limited the V2 driver's view to the west. V2 backed into the "
+      "eastbound lane, and the rear bumper of V2 struck the left side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kBacking);
+}
 }  // namespace
 }  // namespace accsim
