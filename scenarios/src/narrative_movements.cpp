@@ -34,7 +34,12 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       // "saw v2's brake lights but thought it was only slowing a little".
       R"(it\s+(?=(?:was|would)\s+(?:only\s+|just\s+)?(?:slowing|stopping|stopped|turning|waiting|going to|about to)\b)))"
       R"(\b[^,.;]*?(?=,|\b(?:and|but|so)\s+(?:then\s+)?(?:he|she|i)\b|$))");
-  const string t = std::regex_replace(std::regex_replace(text, kOtherInFront, " "), kBeliefOfOther, " ");
+  // Nor what a driver quoted the other doing to him: "she just turned right
+  // in front of me".
+  static const regex kQuotedOther(
+      R"("[^"]{0,40}?\b(?:she|he|they|it|the other (?:car|vehicle|driver|truck))\b[^"]{0,60}?\b(?:me|my|us)\b[^"]{0,40}")");
+  const string t = std::regex_replace(
+      std::regex_replace(std::regex_replace(text, kOtherInFront, " "), kBeliefOfOther, " "), kQuotedOther, " ");
   static const regex kStopState(
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(

@@ -3434,5 +3434,15 @@ TEST(NarrativeExtractorTest, AThingParkedNearAVehicleIsNotThatVehicleParked) {
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kBacking);
 }
+TEST(NarrativeExtractorTest, WhatADriverQuotesTheOtherDoingToHimIsNotHisMovement) {
+  // "she just turned right in front of me": V2's turn, in V1's words.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was northbound in the inside through lane. V2 was southbound and had moved into the center lane to "
+      "turn left at the intersection. V2 began her turn and the front of V1 struck the right side of V2. The "
+      "driver of V1 stated that \"she just turned right in front of me\" and that he had no time to brake.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
+}
 }  // namespace
 }  // namespace accsim
