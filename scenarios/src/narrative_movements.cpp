@@ -50,7 +50,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kNoStop(
       R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:did not|didn't|failed to|never|without|not)\s+(?:come|coming|came)\s+to\s+a\s+(?:complete\s+|full\s+)?stop\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
-      R"(\b(?:coming|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
+      R"(\b(?:coming|pull|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
   static const regex kLeft(
       R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left\b|\bleft[- ]hand turn|\bleft turn\b|\bturn(?:ed|ing)? left|\b(?:made|make|making)\s+a\s+left\s+(?:onto|into)\b|\bu-?\s?turn|\bcross\w*\s+(?:over\s+)?(?:into|to)\s+(?:a|the)\s+(?:\w+\s+){0,2}?(?:driveway|parking lot|lot|alley)\b)");
@@ -316,7 +316,7 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
 // So is one that backed out of its space (NASS "leaving a parking position":
 // its backing is "other than for parking" only off a parking space).
 bool LeftParking(const MovementEvidence& n) {
-  return n.parked && (n.entered || n.turn_left || n.turn_right || n.merge || n.lane_change || n.back);
+  return n.parked && (n.entered || n.turn_left || n.turn_right || n.merge || n.lane_change || n.back || n.leaving_parking);
 }
 
 bool Turning(Movement m) { return m == Movement::kTurnLeft || m == Movement::kTurnRight; }

@@ -3444,5 +3444,17 @@ TEST(NarrativeExtractorTest, WhatADriverQuotesTheOtherDoingToHimIsNotHisMovement
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
   EXPECT_EQ(r.vehicles[1].movement.value, Movement::kTurnLeft);
 }
+TEST(NarrativeExtractorTest, AParkedCarWhoseDriverBeganToPullOutLeftItsParkingPosition) {
+  // "V2 ... was parallel parked at the west curb ... The 80-year-old female
+  // driver of V2 began to pull out of her parking space."
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling south on a two-lane downtown street. V2, a 1994 Ford Taurus sedan, was parallel parked "
+      "at the west curb, facing south. The 80-year-old female driver of V2 began to pull out of her parking "
+      "space. The front of V1 struck the left side of V2 at the left front door.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kMerging);
+  EXPECT_FALSE(r.vehicles[1].parked.value);
+  EXPECT_NE(r.crash.type.value, CrashType::kSingleVehicle);
+}
 }  // namespace
 }  // namespace accsim
