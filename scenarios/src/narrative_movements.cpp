@@ -282,7 +282,9 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // decelerating" to a stop was going straight (crossing/23, straight/17).
   const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant;
   if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
-  if (e.stopped && (!(e.started || n.green_start) || e.stopped_again)) {
+  // (A stop told by the driver that the narrative has him move off from,
+  // "he then accelerated from the stop", is NASS "starting in traffic lane".)
+  if (e.stopped && (!(e.started || n.started || n.green_start) || e.stopped_again)) {
     return both(Movement::kStopped, Provenance::kStated);
   }
   // A lane change that is itself the vehicle's coded critical event ("this

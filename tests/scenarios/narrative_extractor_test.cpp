@@ -3456,5 +3456,15 @@ TEST(NarrativeExtractorTest, AParkedCarWhoseDriverBeganToPullOutLeftItsParkingPo
   EXPECT_FALSE(r.vehicles[1].parked.value);
   EXPECT_NE(r.crash.type.value, CrashType::kSingleVehicle);
 }
+TEST(NarrativeExtractorTest, AStopToldByTheDriverThatTheNarrativeMovesOffFrom) {
+  // The stop is in his statement; the narrative has him accelerate from it.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was northbound on a two-lane county road approaching its intersection with a state highway. The "
+      "54-year-old male driver of V1 stated that he came to a complete stop at the stop sign and looked both "
+      "ways. He then accelerated from the stop to drive straight across the highway. V2 was eastbound in the "
+      "right eastbound lane. The front of V2 struck the left side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
