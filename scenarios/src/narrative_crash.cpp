@@ -492,7 +492,10 @@ void ClassifyCrash(Reading& rd) {
   // turn is decelerating.
   if (type == CrashType::kRearEnd && b && b->pre_event.value == Movement::kSlowing && !Turning(b->movement.value)) {
     const size_t bi = static_cast<size_t>(b - r.vehicles.data());
-    if (!narrative[bi + 1].intent_left && !narrative[bi + 1].intent_right && !narrative[bi + 1].turn_meant) {
+    // (Its driver may be the one to tell the turn: "he activated his right
+    // turn signal and began to slow ... to turn right into a field driveway".)
+    const auto meant_turn = [](const MovementEvidence& e) { return e.intent_left || e.intent_right || e.turn_meant; };
+    if (!meant_turn(narrative[bi + 1]) && !meant_turn(rd.statement[bi + 1])) {
       r.vehicles[bi].pre_event.Set(Movement::kStraight, Provenance::kInferred);
     }
   }

@@ -3466,5 +3466,16 @@ TEST(NarrativeExtractorTest, AStopToldByTheDriverThatTheNarrativeMovesOffFrom) {
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, ALeadSlowingForItsOwnTurnToldByItsDriverIsDecelerating) {
+  // The lead's turn is told only in its driver's statement.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 and V2 were both traveling east on a two-lane rural highway. The pickup (V2) was ahead of V1. The "
+      "driver of V2 was a farmer returning to his property. He stated that he activated his right turn signal "
+      "and began to slow from about 80 km/h to turn right into a field driveway. He had slowed to roughly 25 "
+      "km/h and had not yet begun his turn when V1 struck the rear of his truck.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kSlowing);
+}
 }  // namespace
 }  // namespace accsim
