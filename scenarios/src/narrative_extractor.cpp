@@ -116,12 +116,20 @@ void ReadDescriptions(Reading& rd) {
     // "v2, a 2001 international 9200 tractor pulling a loaded van
     // semitrailer": "the semitrailer", "the trailer" are v2's.
     static const regex kTowedLoad(
-        R"(\bv([1-9]),\s+an?\s+[^,;]{0,60}?\b(?:pulling|towing|hauling)\s+(?:an?\s+)?(?:[\w-]+\s+){0,3}?(semi-?trailer|trailer|camper|boat)\b)");
+        R"(\bv([1-9]),\s+an?\s+[^,;]{0,60}?\b(?:pulling|towing|hauling)\s+(?:an?\s+)?((?:[\w-]+\s+){0,3}?)(semi-?trailer|trailer|camper|boat)\b)");
     for (const Sentence& s : sentences) {
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTowedLoad); it != std::sregex_iterator(); ++it) {
         const int v = std::stoi((*it)[1].str());
-        owners[(*it)[2].str()].insert(v);
-        if ((*it)[2].str() != "trailer") owners["trailer"].insert(v);
+        const string load = (*it)[3].str();
+        owners[load].insert(v);
+        if (load != "trailer") owners["trailer"].insert(v);
+        // ... and by the words before it: "the horse trailer" for "a loaded
+        // gooseneck horse trailer".
+        for (string modifiers = (*it)[2].str(); !modifiers.empty();) {
+          owners[modifiers + load].insert(v);
+          const size_t sp = modifiers.find(' ');
+          modifiers = sp == string::npos ? string() : modifiers.substr(sp + 1);
+        }
       }
     }
     std::vector<std::pair<string, int>> aliases;

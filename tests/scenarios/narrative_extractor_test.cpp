@@ -3477,5 +3477,16 @@ TEST(NarrativeExtractorTest, ALeadSlowingForItsOwnTurnToldByItsDriverIsDecelerat
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kSlowing);
 }
+TEST(NarrativeExtractorTest, ATowedLoadNamedWithItsModifiersIsItsTowersVehicle) {
+  // "the horse trailer" of "V2, a 1999 Ford F-350 pickup towing a loaded
+  // gooseneck horse trailer".
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 2005 Chrysler Sebring, and V2, a 1999 Ford F-350 pickup towing a loaded gooseneck horse trailer, "
+      "were northbound on a two-lane state highway. V2 was climbing the grade at 20 mph. The driver of V1 "
+      "braked and steered left, but the right front of V1 struck the back of the horse trailer.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
+}
 }  // namespace
 }  // namespace accsim
