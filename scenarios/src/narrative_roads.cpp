@@ -1336,6 +1336,7 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     }
     bool found = false;
     size_t skip_until = 0, last_value_end = 0;
+    const size_t sentence_first = limits.size();
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kValue); it != std::sregex_iterator(); ++it) {
       const size_t pos = static_cast<size_t>(it->position());
       if (pos < skip_until) continue;
@@ -1368,6 +1369,13 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
         if (Has(since, kVehicleSpeed) && !Has(since, kLimitWord)) continue;
       }
       last_value_end = pos + static_cast<size_t>(it->length(0));
+      // "the normal 65 mph limit is reduced to a posted 45 mph": the
+      // reduced value replaces the one it reduces.
+      static const regex kReducedTo(
+          R"(\b(?:reduced|lowered|dropp?(?:ed|s)|decreas\w+|cut)\s+to\s+(?:an?\s+)?(?:posted\s+|temporary\s+)?$)");
+      if (Has(Before(s.text, pos, 40), kReducedTo)) {
+        limits.resize(sentence_first);
+      }
       const bool kmh = (*it)[2].str() == "kmh";
       const double value = std::stod((*it)[1].str());
       if (value < 5 || value > 180) continue;

@@ -3488,5 +3488,12 @@ TEST(NarrativeExtractorTest, ATowedLoadNamedWithItsModifiersIsItsTowersVehicle) 
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
 }
+TEST(NarrativeExtractorTest, ALimitReducedThroughAWorkZoneIsTheReducedOne) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred in the westbound lanes of a four-lane divided highway east of a lane closure. "
+      "Through the work zone the normal 65 mph limit is reduced to a posted 45 mph (72 km/h). V1 was stopped "
+      "in the left westbound lane. The front of V2 struck the back of V1.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value / 0.44704, 45.0, 0.01);
+}
 }  // namespace
 }  // namespace accsim
