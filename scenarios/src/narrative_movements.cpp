@@ -38,8 +38,13 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // in front of me".
   static const regex kQuotedOther(
       R"("[^"]{0,40}?\b(?:she|he|they|it|the other (?:car|vehicle|driver|truck))\b[^"]{0,60}?\b(?:me|my|us)\b[^"]{0,40}")");
-  const string t = std::regex_replace(
-      std::regex_replace(std::regex_replace(text, kOtherInFront, " "), kBeliefOfOther, " "), kQuotedOther, " ");
+  // Nor a sign's words: "lane ends merge left" signs are posted.
+  static const regex kSignWords(
+      R"("[^"]{1,40}"\s+(?:warning\s+)?signs?\b|\bsigns?\s+(?:reading|that read|which read|saying|stating)\s+"[^"]{1,40}")");
+  string t = std::regex_replace(text, kOtherInFront, " ");
+  for (const regex* not_its_own : {&kBeliefOfOther, &kQuotedOther, &kSignWords}) {
+    t = std::regex_replace(t, *not_its_own, " ");
+  }
   static const regex kStopState(
       R"(\b(?:was|were|had been|is|remained|sat|been|being)\s+(?:\w+\s+)?(?:stopped|stationary|at rest|waiting|sitting still)\b|\bstopped\b|\bwaiting (?:for|to|at|in)\b|\bawaiting\b|\b(?:came|come|coasted|rolled) to a (?:complete |full )?(?:stop|halt)\b|\bstalled\b|\bwas disabled\b|\b(?:brought|bringing)\s+(?:\w+\s+){0,2}?to a (?:complete |full )?stop\b|\bslowed to a stop\b|\bat a stop\b|\b(?:was|were)\s+(?:the\s+)?(?:1st|first|next|2nd|second|3rd|third|last)\s+(?:vehicle\s+)?in (?:line|the queue)\b)");
   static const regex kStopThenGo(

@@ -3495,5 +3495,16 @@ TEST(NarrativeExtractorTest, ALimitReducedThroughAWorkZoneIsTheReducedOne) {
       "in the left westbound lane. The front of V2 struck the back of V1.");
   EXPECT_NEAR(r.road.speed_limit_mps.value / 0.44704, 45.0, 0.01);
 }
+TEST(NarrativeExtractorTest, ASignsWordsAreNoVehiclesMovement) {
+  // '"Lane Ends Merge Left" signs are posted': V1 kept its lane; V2 merged.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling east in the left eastbound lane of a three-lane road. About 150 meters east of the "
+      "crash site the right eastbound lane ends, and \"Lane Ends Merge Left\" signs are posted in advance. V2 "
+      "was eastbound in the right lane, slightly ahead of V1. The driver of V2 moved left to merge ahead of "
+      "the lane drop, and the left side of V2 sideswiped the right side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kMerging);
+}
 }  // namespace
 }  // namespace accsim
