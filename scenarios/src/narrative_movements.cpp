@@ -66,7 +66,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       // "to get into position for a right turn into a plaza".
       R"(\bfor (?:a|an|the|his|her|its) (?:[\w-]+ )?(?:left|right) turn\b)");
   static const regex kLaneChange(
-      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|\bre-?entered the roadway from the shoulder|)"
+      R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|lane\s+[1-9]\b)|\bre-?entered the roadway from the shoulder|)"
       // "moved right toward lane one in order to turn right".
       R"(\b(?:moved|moving|steered|pulled|cut|swung|eased)\s+(?:over\s+)?(?:to\s+the\s+)?(?:left|right)\s+(?:toward|towards)\s+(?:the\s+)?(?:lane\s+\d|(?:left|right|curb|adjacent|next|outside|inside|center|middle)\s+lane)\b)");
   static const regex kMerge(
@@ -295,7 +295,8 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // A lane change that is itself the vehicle's coded critical event ("this
   // vehicle traveling over the lane line") was preceded by driving on:
   // NASS codes that as the pre-event movement, as for turns.
-  if (e.lane_change || n.coded_lane_change) {
+  // (A move from the ramp's lane into lane 1 is the merge.)
+  if ((e.lane_change || n.coded_lane_change) && !e.merge) {
     // So is a drift out of the lane, which nobody meant.
     const Movement before = n.coded_straight || e.drift ? Movement::kStraight : Movement::kChangingLanes;
     return MovementDecision{Movement::kChangingLanes, before, Provenance::kStated};

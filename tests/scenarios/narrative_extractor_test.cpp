@@ -3506,5 +3506,30 @@ TEST(NarrativeExtractorTest, ASignsWordsAreNoVehiclesMovement) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kStraight);
   EXPECT_EQ(r.vehicles[1].movement.value, Movement::kMerging);
 }
+TEST(NarrativeExtractorTest, TheVanDriverIsTheVansDriver) {
+  // "The van driver ... said she ... was braking for the shuttle stop":
+  // V2's account, not V1's.
+  const AccidentRecord r = kExtractor.Extract(
+      "V2, a 2005 Ford E-350 hotel shuttle van, was northbound in lane one. V1, a 2003 Nissan Altima, was "
+      "northbound in lane two. V1 moved to the right into lane one and the right side of V1 contacted the left "
+      "front corner of V2. The van driver, a 58-year-old female, had seven passengers, none injured. She said "
+      "she had her right turn signal on and was braking for the shuttle stop, down to perhaps 15 mph, when the "
+      "car came over on her.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kChangingLanes);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kSlowing);
+}
+TEST(NarrativeExtractorTest, AMoveIntoLaneOneIsALaneChangeOrFromTheRampAMerge) {
+  const AccidentRecord change = kExtractor.Extract(
+      "V1 and V2 were northbound on a six-lane divided boulevard. V1 was in lane two and V2 in lane one. V1 "
+      "moved to the right into lane one and the right side of V1 contacted the left side of V2.");
+  ASSERT_EQ(change.vehicles.size(), 2u);
+  EXPECT_EQ(change.vehicles[0].movement.value, Movement::kChangingLanes);
+  const AccidentRecord merge = kExtractor.Extract(
+      "V1 came down the entrance ramp and into the acceleration lane. V2 was eastbound in lane one of the "
+      "interstate. V1 moved left into lane one to merge and the left side of V1 struck the right side of V2.");
+  ASSERT_EQ(merge.vehicles.size(), 2u);
+  EXPECT_EQ(merge.vehicles[0].movement.value, Movement::kMerging);
+}
 }  // namespace
 }  // namespace accsim
