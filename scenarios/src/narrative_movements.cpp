@@ -79,7 +79,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kSlow(
       R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|)"
       // "was westbound in lane two, slowing from about 50 mph".
-      R"(,\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
+      R"((?:,|\band)\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
@@ -99,7 +99,8 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kAvoidanceStop(R"(\b(?:saw|seeing|noticed|observed|spotted)\b[^.]{0,80}?\b(?:stopped|braked to a stop)\b)");
   // "was almost stopped when he was hit" is no stop.
   static const regex kAlmostStopped(
-      R"(\b(?:almost|nearly|virtually|practically)\s+(?:stopped|at a stop|to a stop|come to a stop|came to a stop)\b)");
+      // ("had 'almost stopped' waiting to make her turn": the wait too.)
+      R"(\b(?:almost|nearly|virtually|practically)\s+(?:stopped|at a stop|to a stop|come to a stop|came to a stop)\b(?:"?,?\s+waiting\b)?)");
   // Nor is "to go around the stopped vehicle": a stopped thing it passed.
   static const regex kStoppedObject(
       R"(\b(?:the|a|an|another|other|several)\s+(?:[\w-]+\s+)?stopped\s+(?:[\w-]+\s+)?(?:vehicles?|cars?|trucks?|vans?|minivans?|suvs?|pickups?|sedans?|bus|buses|traffic)\b)");
@@ -127,11 +128,11 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   const string turns = std::regex_replace(t, kTurnLane, " lane ");
   const bool intention = Has(turns, kIntention);
   // "slowing with its right turn signal on to turn into the driveway".
-  static const regex kTurnMeant(R"(\bto (?:make a |begin a )?turn\b|\bturn signal\b)");
+  static const regex kTurnMeant(R"(\bto (?:(?:make|begin|start) (?:a|the|his|her|its) )?turn\b|\bturn signal\b)");
   if (Has(t, kTurnMeant)) e.turn_meant = true;
   // "slowed with its left turn signal on": the signal tells the intent.
   static const regex kOwnSignal(
-      R"(\b(?:with|had|activated|turned on|put on|using)\s+(?:its|his|her|their)\s+(left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b|\bsignal(?:ed|led|ing)\s+(?:for\s+)?a\s+(left|right)\s+turn\b)");
+      R"(\b(?:with|had|activated|turned on|put on|using)\s+(?:its|his|her|their)\s+(left|right)(?:[- ]turn)?\s+(?:signal|blinker|indicator)s?\b|\bsignal(?:ed|led|ing)\s+(?:for\s+)?a\s+(left|right)\s+turn\b)");
   if (smatch sm; std::regex_search(t, sm, kOwnSignal)) {
     ((sm[1].matched ? sm[1].str() : sm[2].str()) == "left" ? e.intent_left : e.intent_right) = true;
   }
@@ -285,7 +286,8 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // turn was intended afterwards (how NASS codes it).
   // Unless the investigators coded it still moving: a lead struck "while
   // decelerating" to a stop was going straight (crossing/23, straight/17).
-  const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant;
+  // (Its driver may be the one to tell the turn it slowed for.)
+  const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant || st.intent_left || st.intent_right;
   if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
   // (A stop told by the driver that the narrative has him move off from,
   // "he then accelerated from the stop", is NASS "starting in traffic lane".)

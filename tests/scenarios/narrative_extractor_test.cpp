@@ -3531,5 +3531,24 @@ TEST(NarrativeExtractorTest, AMoveIntoLaneOneIsALaneChangeOrFromTheRampAMerge) {
   ASSERT_EQ(merge.vehicles.size(), 2u);
   EXPECT_EQ(merge.vehicles[0].movement.value, Movement::kMerging);
 }
+TEST(NarrativeExtractorTest, SlowingForItsOwnTurnAlmostStoppedOrToldByTheDriver) {
+  // "westbound ... and slowing to turn left", her "almost stopped" waiting.
+  const AccidentRecord slowing = kExtractor.Extract(
+      "V1 was northbound on the county road, turning right to go east. V2 was westbound on the state route "
+      "and slowing to turn left onto the county road. V1 swung wide in the turn, and the left front of V1 "
+      "struck the left front of V2. The driver of V2 had her left signal on and said she had \"almost "
+      "stopped\" waiting to make her turn.");
+  ASSERT_EQ(slowing.vehicles.size(), 2u);
+  EXPECT_EQ(slowing.vehicles[1].pre_event.value, Movement::kSlowing);
+  // A lead coded "decelerating" whose driver tells of the turn he slowed for
+  // ("had his right signal on and had slowed ... to make the turn").
+  const AccidentRecord lead = kExtractor.Extract(
+      "Both vehicles were eastbound. V2 was ahead; V1 was following. The front of V1 struck the back of V2. "
+      "The driver of V2 told the investigator he had his right signal on and had slowed to around 15 mph to "
+      "make the turn onto the township road. The Critical Precrash Event for V1 was other motor vehicle in "
+      "lane traveling in same direction while decelerating.");
+  ASSERT_EQ(lead.vehicles.size(), 2u);
+  EXPECT_EQ(lead.vehicles[1].pre_event.value, Movement::kSlowing);
+}
 }  // namespace
 }  // namespace accsim
