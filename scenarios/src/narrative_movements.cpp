@@ -73,7 +73,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
-      R"(\bbacking\s+(?:up|out|into|from|toward|across)|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
+      R"(\bbacking\s+(?:up|out|in|into|from|toward|across)\b|\b(?:began|started|attempted|tried)\s+to\s+back\s+(?:up|out|in|into)\b|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
   static const regex kPass(
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
@@ -107,8 +107,14 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // Nor is the queue's stop: "did not recognize that the queue had stopped".
   static const regex kQueueStopped(
       R"(\b(?:the|that)\s+(?:queue|traffic|line of (?:traffic|vehicles|cars))\s+(?:ahead\s+)?(?:had|was|were)\s+(?:already\s+|just\s+)?(?:stopped|come to a stop|at a stop)\b)");
-  const string stops = std::regex_replace(
-      std::regex_replace(std::regex_replace(t, kAlmostStopped, " "), kStoppedObject, " "), kQueueStopped, " ");
+  // Nor a stop made earlier and elsewhere: "had stopped at the previous
+  // light a block back and was speeding back up".
+  static const regex kEarlierStop(
+      R"(\b(?:stopped|come to a stop|came to a stop)\s+(?:at|for)\s+(?:the|a)\s+(?:previous|prior|last|earlier)\s+(?:\w+\s+){0,2}?(?:light|signal|sign|intersection|stop sign|traffic light)s?\b)");
+  string stops = t;
+  for (const regex* not_its_stop : {&kAlmostStopped, &kStoppedObject, &kQueueStopped, &kEarlierStop}) {
+    stops = std::regex_replace(stops, *not_its_stop, " ");
+  }
   // "moved forward ... and then stopped again": the last word is the stop.
   static const regex kStoppedAgain(R"(\b(?:stopped|came to a stop|halted)\s+again\b)");
   if (Has(stops, kStoppedAgain)) e.stopped_again = true;

@@ -3550,5 +3550,22 @@ TEST(NarrativeExtractorTest, SlowingForItsOwnTurnAlmostStoppedOrToldByTheDriver)
   ASSERT_EQ(lead.vehicles.size(), 2u);
   EXPECT_EQ(lead.vehicles[1].pre_event.value, Movement::kSlowing);
 }
+TEST(NarrativeExtractorTest, AStopAtThePreviousLightAndBackingIn) {
+  // Her stop was a block back; she was going straight through on the green.
+  const AccidentRecord earlier = kExtractor.Extract(
+      "Vehicle #1 was eastbound in lane two and turned right at the intersection. Vehicle #2 was eastbound in "
+      "lane one. As the truck swung right across lane one, the right side of Vehicle #1 contacted the front of "
+      "Vehicle #2. The driver of Vehicle #2 said she had stopped at the previous light a block back and was "
+      "speeding back up, going straight through on the green.");
+  ASSERT_EQ(earlier.vehicles.size(), 2u);
+  EXPECT_EQ(earlier.vehicles[1].pre_event.value, Movement::kStraight);
+  // "began backing in" to a parallel space is backing.
+  const AccidentRecord backing = kExtractor.Extract(
+      "V1 stopped in the westbound lane of a two-lane neighborhood street and began backing in toward an open "
+      "space on the north curb. V2 was stopped about a car length behind it. The back of V1 struck the front "
+      "of V2.");
+  ASSERT_EQ(backing.vehicles.size(), 2u);
+  EXPECT_EQ(backing.vehicles[0].movement.value, Movement::kBacking);
+}
 }  // namespace
 }  // namespace accsim
