@@ -38,11 +38,15 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // in front of me".
   static const regex kQuotedOther(
       R"("[^"]{0,40}?\b(?:she|he|they|it|the other (?:car|vehicle|driver|truck))\b[^"]{0,60}?\b(?:me|my|us)\b[^"]{0,40}")");
+  // Nor what the other did to the speaker: "was still stopped ... when it
+  // backed into her".
+  static const regex kDoneToSpeaker(
+      R"(\b(?:it|he|she|they)\s+(?:\w+\s+)?(?:backed|pulled|turned|cut|swerved|swung|came)\s+(?:\w+\s+){0,3}?(?:into|in front of|toward|towards|across)\s+(?:her|him|me|them|us)\b)");
   // Nor a sign's words: "lane ends merge left" signs are posted.
   static const regex kSignWords(
       R"("[^"]{1,40}"\s+(?:warning\s+)?signs?\b|\bsigns?\s+(?:reading|that read|which read|saying|stating)\s+"[^"]{1,40}")");
   string t = std::regex_replace(text, kOtherInFront, " ");
-  for (const regex* not_its_own : {&kBeliefOfOther, &kQuotedOther, &kSignWords}) {
+  for (const regex* not_its_own : {&kBeliefOfOther, &kQuotedOther, &kDoneToSpeaker, &kSignWords}) {
     t = std::regex_replace(t, *not_its_own, " ");
   }
   static const regex kStopState(

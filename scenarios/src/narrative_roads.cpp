@@ -1441,13 +1441,18 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     // residential streets, both two-lane two-way, straight and level, 25 mph").
     static const regex kRoadListValue(
         R"(\b(?:roads?|roadways?|streets?|highways?|intersection|lanes?|two-way|level|straight|curve\w*)\b[^.]{0,80}?,\s*(\d{2,3})\s*(kmh|mph)\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:[,;]|$))");
+    // ... or stands in brackets after the road, in any sentence: "was
+    // northbound on a straight, level 2-lane rural road (45 mph, 72 kmh)".
+    static const regex kRoadBracketValue(
+        R"(\b(?:road|roadway|street|highway|route)\s*\(\s*(\d{2,3})\s*(kmh|mph)\s*(?:[,/]\s*\d{2,3}\s*(?:kmh|mph)\s*)?\))");
     static const regex kTravelWord(
         R"(\b(?:travel\w*|going|driving|doing|moving|speed|estimated|approximately|about|around|between|at)\s+(?:\w+\s+){0,2}$)");
     for (const Sentence& s : sentences) {
       if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
       smatch m;
       const bool subject = std::regex_search(s.text, m, kRoadSubject) && s.refs.empty();
-      const bool listed = !subject && s.refs.empty() && std::regex_search(s.text, m, kRoadListValue);
+      const bool listed = !subject && ((s.refs.empty() && std::regex_search(s.text, m, kRoadListValue)) ||
+                                       std::regex_search(s.text, m, kRoadBracketValue));
       if (!subject && !listed && !std::regex_search(s.text, m, kRoadValue)) continue;
       const size_t pos = static_cast<size_t>(m.position(1));
       if (Has(Before(s.text, pos, 30), kTravelWord)) continue;

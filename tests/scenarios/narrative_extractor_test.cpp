@@ -3567,5 +3567,19 @@ TEST(NarrativeExtractorTest, AStopAtThePreviousLightAndBackingIn) {
   ASSERT_EQ(backing.vehicles.size(), 2u);
   EXPECT_EQ(backing.vehicles[0].movement.value, Movement::kBacking);
 }
+TEST(NarrativeExtractorTest, ALimitInBracketsAfterTheRoadAndWhatTheOtherDidToTheSpeaker) {
+  const AccidentRecord limit = kExtractor.Extract(
+      "On a clear weekday afternoon, V2 was northbound on a straight, level two-lane rural road (45 mph, 72 "
+      "km/h) with V1 behind it. The front of V1 struck the rear of V2.");
+  EXPECT_NEAR(limit.road.speed_limit_mps.value / 0.44704, 45.0, 0.01);
+  // "was still stopped ... when it backed into her": V1 backed, not V2.
+  const AccidentRecord backed = kExtractor.Extract(
+      "Vehicle one was northbound in lane one. Vehicle two was northbound in lane one behind it. The driver of "
+      "Vehicle one stopped, put the truck in reverse and began backing down lane one. The rear of Vehicle one "
+      "struck the front of Vehicle two. The driver of Vehicle two said she came to a stop behind the truck "
+      "and was still stopped and sounding her horn when it backed into her.");
+  ASSERT_EQ(backed.vehicles.size(), 2u);
+  EXPECT_EQ(backed.vehicles[1].pre_event.value, Movement::kStopped);
+}
 }  // namespace
 }  // namespace accsim
