@@ -142,9 +142,10 @@ string Normalise(std::string_view in) {
   static const regex kShortRef(R"(\b[ud]([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kShortRef, "v$1");
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
-  // Not a place in a queue: "the 3rd vehicle in a queue waiting for the light".
+  // Not a place in a queue: "the 3rd vehicle in a queue waiting for the light",
+  // "the 4th car in the eastbound queue".
   static const regex kOrdinalVehicle(
-      R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b(?!\s+(?:in\s+(?:a\s+|the\s+)?(?:queue|line)|from\s+the\s+(?:front|light|signal|stop)|stopped|waiting)\b))");
+      R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b(?!\s+(?:in\s+(?:a\s+|the\s+)?(?:[\w-]+\s+)?(?:queue|line)|from\s+the\s+(?:front|light|signal|stop)|stopped|waiting)\b))");
   s = std::regex_replace(s, kOrdinalVehicle, "v$1");
   // A CIREN summary that never numbers its case vehicle ("the case vehicle,
   // a 2002 toyota camry, ... v2, a 2000 ford f-150"): the case vehicle is v1.

@@ -3581,5 +3581,12 @@ TEST(NarrativeExtractorTest, ALimitInBracketsAfterTheRoadAndWhatTheOtherDidToThe
   ASSERT_EQ(backed.vehicles.size(), 2u);
   EXPECT_EQ(backed.vehicles[1].pre_event.value, Movement::kStopped);
 }
+TEST(NarrativeExtractorTest, APlaceInANamedQueueIsNoVehicleNumber) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle two, a 2006 Ford Fusion, was the fourth car in the eastbound queue and had been stopped in the "
+      "eastbound lane for about a minute. Vehicle one, a 2001 Chevrolet Express van, came around the curve "
+      "and its front struck the back of the Fusion.");
+  EXPECT_EQ(r.participant_count.value, 2);
+}
 }  // namespace
 }  // namespace accsim
