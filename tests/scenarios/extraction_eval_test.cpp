@@ -158,6 +158,12 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_as", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.95}, {"driving_actions", 0.87}, {"crash_type", 0.95}}},
+      {"nmvccs_style_at", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.97},
+        {"collision_location", 0.92}, {"driving_actions", 0.80}, {"crash_type", 0.95}}},
+      {"nmvccs_style_au", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+        {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.95}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -179,7 +185,8 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
                                                 {"driving_actions", 0.90},   {"crash_type", 0.92}};
   for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v", "ciren_style_z",
                           "ciren_style_ab", "ciren_style_ad", "ciren_style_af",
-                          "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar"}) {
+                          "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar",
+                          "ciren_style_av"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});

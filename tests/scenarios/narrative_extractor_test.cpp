@@ -3433,6 +3433,14 @@ TEST(NarrativeExtractorTest, AThingParkedNearAVehicleIsNotThatVehicleParked) {
       "eastbound lane, and the rear bumper of V2 struck the left side of V1.");
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kBacking);
+  // "the truck parked at the corner" is no vehicle of the crash.
+  const AccidentRecord truck = kExtractor.Extract(
+      "V1 was northbound and stopped for a red signal at the intersection, intending to turn right to travel "
+      "east. V2 was traveling east in the right lane. A delivery truck was parked along the curb at the "
+      "southwest corner. V1 began its right turn on red and the front of V2 struck the left side of V1. The "
+      "driver of V1 stated that the truck parked at the corner \"blocked most of the view.\"");
+  ASSERT_EQ(truck.vehicles.size(), 2u);
+  EXPECT_NE(truck.crash.type.value, CrashType::kSingleVehicle);
 }
 TEST(NarrativeExtractorTest, WhatADriverQuotesTheOtherDoingToHimIsNotHisMovement) {
   // "she just turned right in front of me": V2's turn, in V1's words.
