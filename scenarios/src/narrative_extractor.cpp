@@ -145,7 +145,9 @@ void ReadDescriptions(Reading& rd) {
           R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|slow-moving|slowing|disabled|stalled|first|second)\s+)?()" +
           // (Not a place named after one: "the car wash", "the truck stop"; "the
           // van driver" is its driver.)
-          alt + R"()\b(?!\s+(?:wash|dealership|dealer|lot|park|port|stop|yard|rental|shop|show|terminal|scale|scales)\b))");
+          // (Nor one parked by the road: "beside the car parked ahead of an
+          // open space".)
+          alt + R"()\b(?!\s+(?:wash|dealership|dealer|lot|park|port|stop|yard|rental|shop|show|terminal|scale|scales)\b)(?!\s+parked\s+(?:at|along|on|in|beside|behind|ahead|near|next|in front)\b))");
       std::map<string, int> lookup(aliases.begin(), aliases.end());
       for (Sentence& s : sentences) {
         s.text = ReplaceWith(s.text, alias_re, [&](const smatch& m) { return "v" + std::to_string(lookup[m[1].str()]); });

@@ -3596,5 +3596,19 @@ TEST(NarrativeExtractorTest, APlaceInANamedQueueIsNoVehicleNumber) {
       "and its front struck the back of the Fusion.");
   EXPECT_EQ(r.participant_count.value, 2);
 }
+TEST(NarrativeExtractorTest, TheCarParkedBesideItIsNotItself) {
+  // "V1 ... stopped ... beside the car parked ahead of an open parallel
+  // space ... and began backing in": V1 backed from its lane; the parked
+  // car is another.
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle one, a 2005 Ford Five Hundred, stopped in the westbound lane of a two-lane neighborhood street "
+      "beside the car parked ahead of an open parallel space on the north curb, and began backing in. Vehicle "
+      "two, a 2006 Honda Element, had stopped about a car length behind it. The back of the Ford struck the "
+      "front of the Element.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_FALSE(r.vehicles[0].parked.value);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kBacking);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
 }  // namespace
 }  // namespace accsim
