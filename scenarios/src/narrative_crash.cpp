@@ -47,16 +47,17 @@ std::optional<CrashType> CrashTypeFromCoding(const string& coded, bool turner, b
   static const regex kCrossingPaths(R"(\bcrossing street,? across\b)");
   if (Has(coded, kNotInvolved)) return CrashType::kSingleVehicle;
   if (Has(coded, kIntoPath)) return CrashType::kTurnIntoPath;
-  const bool turning = turner || Has(coded, CodedTurn());
+  const bool coded_turn = Has(coded, CodedTurn());
+  const bool turning = turner || coded_turn;
   // A right turn does not cross the opposite lane: one struck by an
   // oncoming vehicle over its left lane line is no turn across path (every
   // 68/69 of the development set is a left turn).
-  const bool across = (turner && !right_turner) || (!turner && Has(coded, CodedTurn()) && !Has(coded, kTurningRight));
+  const bool across = (turner && !right_turner) || (!turner && coded_turn && !Has(coded, kTurningRight));
   if (Has(coded, kFromOpposite) && across) return CrashType::kTurnAcrossPath;
   // Two vehicles turning the same way side by side (a double turn lane),
   // one drifting over the line between them, sideswipe.
   // (Not a turn coded as the critical event: that one turned across.)
-  const bool side_by_side = parallel_turns && !Has(coded, CodedTurn());
+  const bool side_by_side = parallel_turns && !coded_turn;
   if (Has(coded, kAdjacent) && !side_by_side && ((turner && !lane_change) || Has(coded, kTurningRight))) {
     return CrashType::kTurnAcrossPath;
   }
@@ -494,8 +495,7 @@ void ClassifyCrash(Reading& rd) {
     const size_t bi = static_cast<size_t>(b - r.vehicles.data());
     // (Its driver may be the one to tell the turn: "he activated his right
     // turn signal and began to slow ... to turn right into a field driveway".)
-    const auto meant_turn = [](const MovementEvidence& e) { return e.intent_left || e.intent_right || e.turn_meant; };
-    if (!meant_turn(narrative[bi + 1]) && !meant_turn(rd.statement[bi + 1])) {
+    if (!narrative[bi + 1].meant_turn() && !rd.statement[bi + 1].meant_turn()) {
       r.vehicles[bi].pre_event.Set(Movement::kStraight, Provenance::kInferred);
     }
   }
@@ -503,14 +503,16 @@ void ClassifyCrash(Reading& rd) {
   // encroaches on from the next lane is coded going straight, whatever it did
   // before its turn (straight/0: "she had stopped prior to turning";
   // crossing/21): the other vehicle's move is the critical event.
+  // Not when the other turned the same way beside it (a double turn lane)
+  // and no turn is coded as the critical event.
+  const bool turn_coded = Has(coded, CodedTurn());
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
     const MovementEvidence& told = narrative[i + 1];
-    const bool about_to_turn = Turning(v.movement.value) || told.intent_left || told.intent_right || told.turn_meant;
+    const bool about_to_turn = Turning(v.movement.value) || told.meant_turn();
     if (!about_to_turn || told.coded_turn_left || told.coded_turn_right || told.coded_straight) continue;
-    // Not when the other turned the same way beside it (a double turn lane).
     const bool side_by_side =
-        !Has(coded, CodedTurn()) && std::any_of(r.vehicles.begin(), r.vehicles.end(), [&](const VehicleRecord& o) {
+        !turn_coded && std::any_of(r.vehicles.begin(), r.vehicles.end(), [&](const VehicleRecord& o) {
           return &o != &v && Turning(o.movement.value) && o.movement.value == v.movement.value;
         });
     if (side_by_side) continue;

@@ -297,7 +297,7 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
   // Unless the investigators coded it still moving: a lead struck "while
   // decelerating" to a stop was going straight (crossing/23, straight/17).
   // (Its driver may be the one to tell the turn it slowed for.)
-  const bool meant_turn = n.intent_left || n.intent_right || n.turn_meant || st.intent_left || st.intent_right;
+  const bool meant_turn = n.meant_turn() || st.meant_turn();
   if (n.other_says_decelerating && !meant_turn) return both(Movement::kStraight, Provenance::kStated);
   // (A stop told by the driver that the narrative has him move off from,
   // "he then accelerated from the stop", is NASS "starting in traffic lane".)

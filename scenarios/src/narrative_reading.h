@@ -114,6 +114,8 @@ struct MovementEvidence {
   bool drift = false;     // "drifted to the left into the left lane": no lane change meant
   bool intent_left = false, intent_right = false, entered = false;  // "waiting to turn left", then "entered the road"
   bool turn_meant = false;  // a turn meant, its direction untold ("slowing to turn into the driveway")
+  // A turn it meant, said by its signal or in words.
+  bool meant_turn() const { return intent_left || intent_right || turn_meant; }
   bool any_narrative() const {
     return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
            back || pass || slowing || straight || in_curve;
