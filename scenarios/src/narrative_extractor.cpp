@@ -185,11 +185,9 @@ void FindImpact(Reading& rd) {
       if (pass < 2 && s.kind == Kind::kStatement && !Has(s.text, kPlaneContact)) continue;
       // "could not avoid striking v1" foretells the impact; the sentence that
       // tells it comes next.
-      static const regex kAvoided(
-          R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b)");
       // Nor is a role's name ("v2, the striking vehicle") a contact.
       static const regex kRoleName(R"(\b(?:striking|struck)\s+(?:vehicle|car|unit|driver)s?\b)");
-      if (!Has(std::regex_replace(std::regex_replace(s.text, kAvoided, " "), kRoleName, " "), ContactVerb())) continue;
+      if (!Has(std::regex_replace(WithoutAvoidedContacts(s.text), kRoleName, " "), ContactVerb())) continue;
       const size_t distinct = DistinctVehicles(s.refs);
       if ((pass == 0 && distinct >= 2) || (pass >= 1 && distinct > 0)) {
         impact = i;
@@ -241,7 +239,9 @@ void FindImpact(Reading& rd) {
   bool& unnumbered_other = rd.unnumbered_other;
   bool& unnumbered_parked = rd.unnumbered_parked;
   if (impact < sentences.size()) {
-    const string& s = sentences[impact].text;
+    // ("... crossed the highway without striking any vehicle, and its front
+    // struck the embankment": the contact is the one that happened.)
+    const string s = WithoutAvoidedContacts(sentences[impact].text);
     smatch vm;
     if (std::regex_search(s, vm, ContactVerb())) {
       // What it struck, up to the next clause ("..., then the vehicle rolled").

@@ -83,6 +83,9 @@ bool Perpendicular(Compass a, Compass b);
 
 // Contact verbs ("struck", "collided", "rear-ended", ...).
 const std::regex& ContactVerb();
+// The text with contacts that did not happen blanked ("could not avoid
+// striking", "without hitting any vehicle").
+string WithoutAvoidedContacts(const string& text);
 // Nouns of an unnumbered vehicle, and of the objects a vehicle strikes.
 const std::regex& VehicleNoun();
 const std::regex& ObjectNoun();

@@ -32,6 +32,7 @@ struct RoadStatement {
   std::optional<Compass> bound;    // the direction a directional count is of ("3 westbound lanes")
   bool one_way = false;
   bool cross = false;              // said of the cross street ("the cross street is a 2-lane road")
+  bool met = false;                // said of the road another meets ("... where it ends at a T-intersection with a 4-lane arterial")
   bool ramp = false;               // said of a ramp ("a single-lane entrance ramp")
   bool centre = false;             // its phrase adds a centre lane ("... separated by a 2-way left-turn lane")
   string name;                     // the named road its clause is about ("route 202 is ... with 1 lane each way")
@@ -502,9 +503,10 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
   static const regex kPerDir(
       R"(\b(\d)[- ](?:through\s+|travel\s+|moving\s+)?lanes?\s+(?:of\s+(?:traffic|travel)\s+)?(?:(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane)\s+)?(?:in\s+|for\s+|going\s+in\s+)?(?:each|either|both|per|every)\s+(?:the\s+\w+\s+and\s+\w+\s+)?(?:directions?|ways?\b))");
   // "each direction of route 30 has 2 through lanes plus a left-turn bay",
+  // "the northbound and southbound roadways each have 2 3.7 m lanes",
   // "a grass median and, in each direction, 2 through lanes and a left-turn lane".
   static const regex kEachHas(
-      R"((?:\beach (?:direction|approach|side)\b[^.;]{0,30}?\b(?:has|had)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:through\s+|travel\s+|moving\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
+      R"((?:\beach (?:direction|approach|side)\b[^.;]{0,30}?\b(?:has|had)|\b(?:roadways|sides|carriageways|approaches|halves)\s+each\s+(?:has|had|have|carry|carried)|\b(?:in|for)\s+(?:each|either|both)\s+directions?\s*,)\s+(\d)\s+(?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:through\s+|travel\s+|moving\s+)?lanes?(?:\s+(plus|and)\s+(?:a|an|one|1)\s+(?:single\s+|exclusive\s+|separate\s+|dedicated\s+)?(?:left|right)[- ]turn\s+(?:bay|lane))?)");
   static const regex kDirectional(
       R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|travel\s+|through\s+)?lanes?\b|(?=\s*(?:[,;.)]|and\b|$)))|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
   static const regex kTotal(
@@ -552,6 +554,10 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       static const regex kMetRoad(
           R"(\b(?:meets?|meeting|intersects?|intersecting|crosses|joins|ends at|ending at|tees into)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}$)");
       if (rs.owner > 0 && Has(Before(s.text, pos, 40), kMetRoad)) rs.owner = 0;
+      static const regex kMetAtJunction(
+          R"(\b(?:meets?|meeting|intersects?|intersecting|joins|ends at|ending at|tees into|terminates at)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:t-|y-)?(?:intersection|junction)\s+with\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}$)");
+      rs.met = Has(Before(s.text, pos, 40), kMetRoad) || Has(Before(s.text, pos, 70), kMetAtJunction);
+
       const size_t from = pos > 60 ? pos - 60 : 0;
       const string around = s.text.substr(from, pos - from + static_cast<size_t>(m.length(0)) + 40);
       // The road's axis: named up to the count ("an east-west roadway with
@@ -568,8 +574,10 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
         const string own = s.text.substr(pos + static_cast<size_t>(m.length(0)), 30);
         if (std::regex_search(own, am, kOwnPhraseAxis)) rs.axis = AxisIn(am[1].str());
       }
-      if (!rs.axis) rs.axis = AxisIn(around);
-      rs.axis = ctx.InheritedAxis(i, rs.axis);
+      // (Not the met road's: "on the northbound approach of a street where
+      // it ends at a T-intersection with a 4-lane arterial".)
+      if (!rs.axis && !rs.met) rs.axis = AxisIn(around);
+      if (!rs.met) rs.axis = ctx.InheritedAxis(i, rs.axis);
       smatch sm;
       if (!rs.axis && std::regex_search(s.text, sm, kSubjectRoad) && axis_of_road.count(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0))) {
         rs.axis = axis_of_road.at(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0));
@@ -592,6 +600,11 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       static const regex kCrossStreet(
           R"(\b(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b|\bthe stem\b)");
       rs.cross = Has(around, kCrossStreet);
+      // ... or the sentence before named it: "the intersecting street
+      // comes in from the south; it has 1 lane in each direction".
+      static const regex kItSubject(R"(^(?:it|this street|this road|that street|that road)\s+(?:has|had|is|was|carries|carried)\b)");
+      static const regex kCrossSubject(R"(^(?:the\s+)?(?:cross|crossing|intersecting|side|minor)\s+(?:street|road|roadway|route)\b)");
+      if (!rs.cross && !rs.met && i > 0 && Has(s.text, kItSubject) && Has(sentences[i - 1].text, kCrossSubject)) rs.cross = true;
       static const regex kRampAfter(R"(^[\w ,-]{0,30}?\bramp\b)");
       // ... or the sentence is about the ramp: "the ramp was a 1-way roadway
       // that widened from 1 lane to 2 lanes near its end".
@@ -632,11 +645,13 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
                                  }),
                   roads.end());
     };
-    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kPerDir); it != std::sregex_iterator(); ++it) {
-      add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
-    }
-    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kEachHas); it != std::sregex_iterator(); ++it) {
-      add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
+    // (A count inside a per-direction phrase is not also a total.)
+    std::vector<std::pair<size_t, size_t>> per_spans;
+    for (const regex* per_re : {&kPerDir, &kEachHas}) {
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), *per_re); it != std::sregex_iterator(); ++it) {
+        add(*it, static_cast<size_t>(it->position()), 0, std::stoi((*it)[1].str()) + ((*it)[2].matched ? 1 : 0), 0);
+        per_spans.emplace_back(static_cast<size_t>(it->position()), static_cast<size_t>(it->position() + it->length()));
+      }
     }
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kDirectional); it != std::sregex_iterator();
          ++it) {
@@ -655,6 +670,16 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       roads.back().bound = bound;
     }
     for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTotal); it != std::sregex_iterator(); ++it) {
+      const size_t at = static_cast<size_t>(it->position());
+      // (Nor is its breakdown: "each approach had 3 lanes at the
+      // intersection: 2 through lanes and a left-turn bay".)
+      auto in_per_phrase = [&](const std::pair<size_t, size_t>& sp) {
+        if (at >= sp.first && at < sp.second) return true;
+        if (at < sp.second || at - sp.second > 40) return false;
+        const string between = s.text.substr(sp.second, at - sp.second);
+        return between.find_first_of(":(") != string::npos && between.find_first_of(".;") == string::npos;
+      };
+      if (std::any_of(per_spans.begin(), per_spans.end(), in_per_phrase)) continue;
       // "lane 2" / "the 2 lanes to the left" are not road descriptions; "2-lane", "2 lane road" are.
       const string after = it->suffix().str().substr(0, 40);
       const string before = s.text.substr(0, static_cast<size_t>(it->position()));
@@ -672,7 +697,7 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       // eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
       // ("2 through lanes and a left-turn bay").
       static const regex kDirectionSubject(
-          R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:of\s+the\s+(?:[\w-]+\s+){0,2}?(?:roadway|road|street|highway|avenue|boulevard|arterial)\s+)?(?:\w+\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+          R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:of\s+the\s+(?:[\w-]+\s+){0,2}?(?:roadway|road|street|highway|avenue|boulevard|arterial)\s+)?(?:\w+\s+|(?:at|in|near)\s+(?:this|that|the)\s+(?:\w+\s+)?(?:point|location|area|site|place|section)\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
       // ("2 through lanes and 2 left-turn lanes at the intersection": 4.)
       static const regex kBayAfter(
           R"(^\s+(?:through\s+|travel\s+)?lanes?\s*,?\s+(?:and|plus)\s+(a|an|\d)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bays?|lanes?)\b|^\s+(?:and|plus)\s+(a|an|\d)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bays?|lanes?)\b)");
@@ -860,6 +885,10 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   if (!best && v1_way <= 0 && ctx.v1_axis >= 0) {
     best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.axis && *rs.axis == ctx.v1_axis; });
   }
+  // (The road the crash road meets is not the crash road: "on the
+  // approach of a residential street where it ends at a T-intersection with
+  // a 4-lane arterial".)
+  if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1 && !rs.met; });
   if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
   if (!best && v1_way <= 0 && !roads.empty()) best = &roads.front();
   // V1 travelling across the axis of the road described as the through
@@ -922,7 +951,7 @@ void CountLanes(Reading& rd, const RoadContext& ctx, const std::vector<RoadState
     });
     for (const RoadStatement* rp : near) {
       const RoadStatement& rs = *rp;
-      if (&rs == best || rs.owner > 1 || rs.one_way != best->one_way || rs.ramp != best->ramp ||
+      if (&rs == best || rs.owner > 1 || rs.one_way != best->one_way || rs.ramp != best->ramp || (rs.met && !best->met) ||
           (rs.axis && best->axis && rs.axis != best->axis)) {
         continue;
       }
@@ -1150,6 +1179,10 @@ void ReadDivision(Reading& rd, const RoadContext& ctx, const std::vector<RoadSta
       const bool after_and = v1_at != string::npos && v1_at >= from + phrase.size() && next != string::npos;
       if ((before_and || after_and) && Has(phrase, RoadWord())) return false;
     }
+    // "a 4-lane divided highway and a 2-lane undivided cross street", V1's
+    // lanes counted on the highway: the cross street's word.
+    static const regex kCrossRoadPhrase(R"(\b(?:cross|crossing|side|minor)\s+(?:street|road|roadway|route)\b|\bcrossroad\b)");
+    if (junction && best && !best->cross && Has(phrase, kCrossRoadPhrase)) return false;
     std::optional<int> axis = AxisIn(phrase);
     if (!axis) axis = AxisIn(s.text);
     return !(junction && ctx.v1_axis >= 0 && axis && *axis != ctx.v1_axis);

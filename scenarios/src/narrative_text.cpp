@@ -585,8 +585,14 @@ string Detail(const AreaWords& a) {
 
 const regex& ContactVerb() {
   static const regex kContact(
-      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged)\b)");
+      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged)\b)");
   return kContact;
+}
+
+string WithoutAvoidedContacts(const string& text) {
+  static const regex kAvoided(
+      R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b)");
+  return std::regex_replace(text, kAvoided, " ");
 }
 
 const regex& VehicleNoun() {

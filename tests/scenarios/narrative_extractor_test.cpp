@@ -3610,5 +3610,72 @@ TEST(NarrativeExtractorTest, TheCarParkedBesideItIsNotItself) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kBacking);
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
 }
+TEST(NarrativeExtractorTest, AContactThatDidNotHappenAndARakedSide) {
+  // "crossed ... without striking any vehicle": one vehicle, into the
+  // embankment.
+  const AccidentRecord alone = kExtractor.Extract(
+      "V1, a 2005 Chevrolet TrailBlazer, was southbound on a two-lane county road that ends at a "
+      "T-intersection with a state highway. V1 passed the stop sign at speed, crossed both lanes of the state "
+      "highway without striking any vehicle, went through the ditch, and its front struck the embankment.");
+  EXPECT_EQ(alone.participant_count.value, 1);
+  EXPECT_EQ(alone.crash.type.value, CrashType::kSingleVehicle);
+  // "the left front of V2 raked down the left side of V1": a sideswipe
+  // across the centre line.
+  const AccidentRecord raked = kExtractor.Extract(
+      "Vehicle #1 was traveling east on a two-lane, undivided city street. Vehicle #2, a pickup, was westbound "
+      "on the same street. The pickup drifted across the double yellow line into the eastbound lane. The "
+      "driver of Vehicle #1 steered right toward the curb, but the left front of the pickup raked down the "
+      "left side of Vehicle #1, from the front fender to the rear door.");
+  EXPECT_EQ(raked.crash.type.value, CrashType::kSideswipeOpposite);
+}
+TEST(NarrativeExtractorTest, LaneCountsOfOneSideAndTheirBreakdown) {
+  // One direction's roadway "at this point" and lanes told with their width.
+  const AccidentRecord side = kExtractor.Extract(
+      "The eastbound roadway at this point has three 3.6 m lanes and is separated from the westbound lanes by "
+      "a concrete median barrier. Vehicle #1 was in the center lane and moved left into the median lane to get "
+      "around a slower tractor-trailer. Vehicle #2 was already in the median lane. The left side of Vehicle "
+      "#1 contacted the right side of Vehicle #2.");
+  EXPECT_TRUE(side.road.divided.value);
+  EXPECT_EQ(side.road.lanes_per_direction.value, 3);
+  ASSERT_EQ(side.vehicles.size(), 2u);
+  EXPECT_EQ(side.vehicles[0].movement.value, Movement::kChangingLanes);
+  const AccidentRecord each = kExtractor.Extract(
+      "The crash occurred on a four-lane divided highway. The northbound and southbound roadways each have two "
+      "3.7 m lanes and are separated by a depressed grass median. V1 was northbound in the right lane when it "
+      "slid off the left side of the roadway and its right side struck the guardrail.");
+  EXPECT_EQ(each.road.lanes_per_direction.value, 2);
+  EXPECT_EQ(each.road.lanes_total.value, 4);
+  // "each approach had 3 lanes: 2 through lanes and a left-turn bay", on
+  // the divided highway, not the undivided cross street.
+  const AccidentRecord bays = kExtractor.Extract(
+      "This crash occurred at an intersection of a four-lane divided highway and a two-lane undivided cross "
+      "street. The highway ran north and south and was divided by a grass median; left-turn bays were cut "
+      "into the median, so that each approach had three lanes at the intersection: two through lanes and a "
+      "left-turn bay. Vehicle 1 was northbound in the left-turn bay waiting to turn left. Vehicle 2 was "
+      "southbound in the inside through lane. The front of Vehicle 2 struck the right side of Vehicle 1.");
+  EXPECT_TRUE(bays.road.divided.value);
+  EXPECT_EQ(bays.road.lanes_per_direction.value, 3);
+}
+TEST(NarrativeExtractorTest, TheRoadTheCrashRoadMeetsIsAnother) {
+  // "on the northbound approach of a residential street where it ends at a
+  // T-intersection with a four-lane arterial": the street's 2 lanes.
+  const AccidentRecord met = kExtractor.Extract(
+      "This rear-end crash took place on the northbound approach of a residential street where it ends at a "
+      "T-intersection with a four-lane arterial. The residential street is two lanes, one in each direction. "
+      "V2 was stopped at the stop sign waiting to turn right onto the arterial. V1 had stopped behind it, "
+      "then started forward, and the front of V1 struck the back of V2.");
+  EXPECT_EQ(met.road.lanes_total.value, 2);
+  // "the intersecting street comes in from the south; it has one lane in
+  // each direction", V1 northbound on it.
+  const AccidentRecord side = kExtractor.Extract(
+      "This crash occurred at a T-intersection. The through roadway runs east-west and is a four-lane, two-way "
+      "undivided road, two lanes in each direction. The intersecting street comes in from the south; it has "
+      "one lane in each direction and is stop-controlled where it meets the four-lane road. Vehicle #1 was "
+      "northbound on the side street, stopped at the stop sign and then began to turn left. Vehicle #2 was "
+      "eastbound in the curb lane of the four-lane road. The front of Vehicle #2 struck the left side of "
+      "Vehicle #1.");
+  EXPECT_EQ(side.road.lanes_per_direction.value, 1);
+  EXPECT_EQ(side.road.lanes_total.value, 2);
+}
 }  // namespace
 }  // namespace accsim
