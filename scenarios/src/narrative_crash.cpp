@@ -157,6 +157,12 @@ void ReadContact(Reading& rd) {
       }
     }
     if (!subject && !object && !refs.empty()) subject = refs.front().vehicle;
+    // "its driver allowed it to drift ..., where it struck v2 head-on": of
+    // two vehicles, a pronoun subject is the other one.
+    static const regex kPronounSubject(R"(\b(?:it|its|he|his|she|her)\b)");
+    if (!subject && object && r.vehicles.size() == 2 && Has(s.substr(0, verb_pos), kPronounSubject)) {
+      subject = object == 1 ? 2 : 1;
+    }
     // "v1 and v2 collided": no object after the verb; the first named is
     // taken as the striker, the other as struck.
     // "v1 had slowed when v2 struck it": a pronoun object is the other
@@ -414,7 +420,8 @@ void ClassifyCrash(Reading& rd) {
     static const regex kBroadside(R"(\bt-?bon(?:ed|ing|e)\b|\bbroadsid(?:ed|ing|e)\b)");
     // Front corners count as fronts here: investigators code "the front left
     // of v2 with its front left" as a head-on.
-    const bool front_to_front = sa.front && (sb.front || !sb.any());
+    // (So does a contact told as head-on: "where it struck v2 head-on".)
+    const bool front_to_front = (sa.front && (sb.front || !sb.any())) || Has(impact_text, HeadOnPhrase());
     // Paths that cross: a junction, a vehicle running a sign or light, or one
     // pulling out of a drive.
     const bool crossing_paths = r.road.kind.value == RoadKind::kIntersection ||
@@ -655,13 +662,22 @@ void LocateCrash(Reading& rd) {
     static const regex kOthersDrive(
         R"(\b(?:a|an|another)\s+(?:[\w-]+\s+){0,2}?(?:vehicle|car|truck|van|pickup|suv)\b[^.;]{0,80}?\b(?:into|out of|from)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:driveway|alley|parking lot)\b)");
     // A crash on a ramp leading to an intersection is on the ramp.
-    static const regex kOnTheRamp(R"(\b(?:on|onto|along|of|in)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
+    static const regex kOnTheRamp(R"(\b(?:on|onto|along|of|in|up|down|from|via)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
     // Nor a drive people got off at: "a school bus stopped to let two
     // children off at their driveway".
+    static const string kDriveNoun = R"((?:driveways?|(?:farm|field|private|ranch)\s+(?:lane|drive|entrance|access)s?))";
     static const regex kPeoplesDrive(
-        R"(\b(?:children|kids|students|pupils|passengers?|child|riders?)\s+(?:\w+\s+){0,3}?(?:at|to|near)\s+(?:their|his|her|a|the)\s+(?:\w+\s+)?driveways?\b|)"
+        R"(\b(?:children|kids|students|pupils|passengers?|child|riders?)\s+(?:\w+\s+){0,3}?(?:at|to|near)\s+(?:their|his|her|a|the)\s+(?:\w+\s+)?)" + kDriveNoun + R"(\b|)"
         // Nor one it drove past: "had passed the entrance to a shopping plaza".
         R"(\b(?:passed|missed|past|overshot)\s+(?:the|a|an)\s+(?:entrance|driveway|drive)\b[^.;,]{0,40})");
+    // Nor one named as a landmark: "just north of a farm lane, v1 drifted
+    // across the centerline", unless someone turned into or out of it
+    // ("waiting ... before turning into the farm lane", told anywhere).
+    static const regex kLandmarkDrive(
+        R"(\b(?:just\s+|immediately\s+|slightly\s+)?(?:north|south|east|west|short)\s+of\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?)" + kDriveNoun + R"(\b)");
+    static const regex kTurnAtDrive(
+        R"(\b(?:turn\w*|pull\w*|back\w*|exit\w*|leav\w*|enter\w*)\s+(?:\w+\s+){0,2}?(?:into|out of|from|onto|to)\s+(?:a|an|the|his|her|their)\s+(?:[\w'-]+\s+){0,2}?)" + kDriveNoun + R"(\b)");
+    const bool drive_used = Has(rd.norm, kTurnAtDrive);
     static const regex kMidblock(
         R"(\bmid-?block\b|\bnon-?junction\b|\bnot (?:at|in|near) (?:an|the) (?:intersection|junction)\b|)"
         // "at a location with no median opening or intersection".
@@ -673,7 +689,8 @@ void LocateCrash(Reading& rd) {
     } else if (Has(WithoutDistantJunctions(impact_text), kIntersectionWord) || Has(pre, kAtIntersectionStrong) ||
                RanTrafficControl(pre) || (Has(pre, kAtIntersection) && !Has(pre, kOnTheRamp))) {
       r.crash.location.Set(CrashLocation::kJunction, Provenance::kInferred);
-    } else if (Has(std::regex_replace(pre, kPeoplesDrive, " "), DrivewayWord())) {
+    } else if (Has(std::regex_replace(drive_used ? pre : std::regex_replace(pre, kLandmarkDrive, " "), kPeoplesDrive, " "),
+                   DrivewayWord())) {
       r.crash.location.Set(CrashLocation::kDriveway, Provenance::kInferred);
     } else if (Has(pre, kOnTheRamp)) {
       r.crash.location.Set(CrashLocation::kRamp, Provenance::kInferred);
@@ -686,6 +703,13 @@ void LocateCrash(Reading& rd) {
     }
     if (r.crash.location.value == CrashLocation::kDriveway && r.road.kind.value == RoadKind::kStraight) {
       r.road.kind.Set(RoadKind::kDriveway, Provenance::kInferred);
+    }
+    // "where a one-lane entrance ramp joins the eastbound lanes": the
+    // roads meet at the ramp's merge, not at an intersection.
+    static const regex kJunctionNoun(R"(\bintersection\b|\bjunction\b)");
+    if (r.crash.location.value == CrashLocation::kRamp && r.road.kind.value == RoadKind::kIntersection &&
+        !Has(pre, kJunctionNoun)) {
+      r.road.kind.Set(RoadKind::kRamp, Provenance::kInferred);
     }
   }
 }

@@ -275,8 +275,12 @@ void CountParticipants(Reading& rd) {
     smatch m;
     if (std::regex_search(norm, m, kCount)) {
       r.participant_count.Set(std::stoi(m[1].matched ? m[1].str() : m[2].str()), Provenance::kStated);
-    } else if (Has(norm, ContactVerb()) && Has(norm, VehicleNoun())) {
-      // "the vehicle left the road and struck a tree": one unnumbered vehicle.
+    } else if (static const regex kSingle(R"(\b(?:single|one|1)[- ]vehicle\b)"); Has(norm, kSingle)) {
+      r.participant_count.Set(1, Provenance::kStated);
+    } else if (static const regex kAlone(R"(\b(?:rolled|rollover|overturned|flipped|left the road|ran off the road|departed)\b)");
+               (Has(norm, ContactVerb()) || Has(norm, kAlone)) && Has(norm, VehicleNoun())) {
+      // "the vehicle left the road and struck a tree", "... rolled 2
+      // quarter turns": one unnumbered vehicle.
       r.participant_count.Set(1, Provenance::kInferred);
     } else {
       r.warnings.push_back("participants: no vehicle references (V1, vehicle one, ...) found");

@@ -42,11 +42,20 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // backed into her".
   static const regex kDoneToSpeaker(
       R"(\b(?:it|he|she|they)\s+(?:\w+\s+)?(?:backed|pulled|turned|cut|swerved|swung|came)\s+(?:\w+\s+){0,3}?(?:into|in front of|toward|towards|across)\s+(?:her|him|me|them|us)\b)");
+  // Nor what the driver saw or missed the other doing: "didn't notice she
+  // was slowing".
+  static const regex kPerceivedOther(
+      R"(\b(?:notic\w*|see|saw|seen|seeing|realiz\w*|realis\w*|observ\w*)\s+(?:that\s+)?(?:she|he|it|they)\s+(?:was|were|had)\s+[^,.;"]{0,40})");
+  // Nor what the other did that the driver reacted to: "when it stopped he
+  // braked hard".
+  static const regex kOtherWhenDriver(
+      R"(\b(?:when|as|after|once)\s+(?:it|the other (?:car|vehicle|truck|van))\s+(?:\w+\s+)?(?:stopped|slowed|braked|turned|pulled out)\b(?=\s*,?\s*(?:he|she|i)\s))");
   // Nor a sign's words: "lane ends merge left" signs are posted.
   static const regex kSignWords(
       R"("[^"]{1,40}"\s+(?:warning\s+)?signs?\b|\bsigns?\s+(?:reading|that read|which read|saying|stating)\s+"[^"]{1,40}")");
   string t = std::regex_replace(text, kOtherInFront, " ");
-  for (const regex* not_its_own : {&kBeliefOfOther, &kQuotedOther, &kDoneToSpeaker, &kSignWords}) {
+  for (const regex* not_its_own : {&kBeliefOfOther, &kQuotedOther, &kDoneToSpeaker, &kPerceivedOther, &kOtherWhenDriver,
+                                   &kSignWords}) {
     t = std::regex_replace(t, *not_its_own, " ");
   }
   static const regex kStopState(
@@ -83,7 +92,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kSlow(
       R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|)"
       // "was westbound in lane two, slowing from about 50 mph".
-      R"((?:,|\band)\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
+      R"((?:,|\band)\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:(?:a|an|its|his|her)\s+(?:\w+\s+)?)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
   static const regex kStraight(
       R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the

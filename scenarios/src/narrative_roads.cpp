@@ -1585,7 +1585,7 @@ bool LeavesDriveway(const string& t) {
 
 const regex& DrivewayWord() {
   static const regex kDriveway(
-      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road|lane)\b|\b(?:farm|field|ranch|pasture) (?:lane|entrance|access|drive|gate)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
   return kDriveway;
 }
 

@@ -78,6 +78,9 @@ string Normalise(std::string_view in) {
   // "u.s. 30", "u.s. route 1": the route's name, not a sentence end.
   static const regex kUsRoute(R"(\bu\.\s?s\.\s*(?=\d|route\b|highway\b|hwy\b|rt\b))");
   s = std::regex_replace(s, kUsRoute, "us ");
+  // "with its four-way flashers on": hazard lights, not a 4-way junction.
+  static const regex kFourWayFlashers(R"(\b(?:4|four)[- ]way\s+(?=(?:emergency\s+|hazard\s+)?(?:flashers?|hazards?|lights|blinkers|signals)\b))");
+  s = std::regex_replace(s, kFourWayFlashers, "hazard ");
   static const regex kSingleLane(R"(\bsingle[- ]lane\b)");
   s = std::regex_replace(s, kSingleLane, "1-lane");
   static const regex kSingleTravelLane(R"(\bsingle\s+(travel|through|traffic|(?:north|south|east|west)bound)\s+lane\b)");
@@ -247,7 +250,8 @@ Numbered NameUnnumberedVehicles(const string& s) {
   // once the narrator is v1, "the car behind me" (groups 8, 9).
   static const regex kIntro(
       R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
-      R"()\b|\b(?:a|an)\s+((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+(?!was\b|that\b|which\b|who\b|and\b|lost\b|left\b)[a-z][a-z0-9-]*){0,2}))" +
+      // (Not a place named for vehicles: "witnesses in a bus shelter".)
+      R"()\b(?!\s+(?:shelter|stop|station|depot|bench|wash|dealership|dealer|lot|garage|repair|shop|park)\b)|\b(?:a|an)\s+((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+(?!was\b|that\b|which\b|who\b|and\b|lost\b|left\b)[a-z][a-z0-9-]*){0,2}))" +
       R"(|\b(?:a|an)\s+()" + kColour + R"(?)" + kMakes +
       R"((?:\s+(?!was\b|were\b|that\b|which\b|who\b|and\b|in\b|on\b|at\b|with\b|driven\b|travel\w*|going\b|heading\b|had\b|hit\b|struck\b)[a-z0-9][a-z0-9-]*)?)\b)" +
       R"(|\b(?:a|an)\s+(motorcyclist|motorist)\b|\bthe\s+(?:other\s+)?()" + kNoun +
@@ -370,8 +374,9 @@ Kind KindOf(const string& s) {
   static const regex kPeoplePhrase(
       R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|)"
       // ... nor the driver's age as the subject of the vehicle's movement
-      // ("its 58-year-old driver stopped at the stop sign and began a right turn").
-      R"(\b(?:the|its|his|her)\s+\d+[- ]year[- ]old\s+(?:male\s+|female\s+)?(?:driver|operator)(?:\s+of\s+v[1-9])?\s+(?=(?:then\s+)?(?:stopped|began|started|turned|pulled|slowed|braked|backed|accelerated|entered|proceeded|attempted|drove|steered|swerved|merged|changed|failed|did not|was (?:traveling|driving|going|stopped|slowing|turning|backing|attempting))\b)|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      // ("its 58-year-old driver stopped at the stop sign and began a right turn",
+      // "v2's 66-year-old driver had his left signal on and was slowing").
+      R"(\b(?:the|its|his|her|v[1-9]'s)\s+\d+[- ]year[- ]old\s+(?:male\s+|female\s+)?(?:driver|operator)(?:\s+of\s+v[1-9])?\s+(?=(?:then\s+)?(?:stopped|began|started|turned|pulled|slowed|braked|backed|accelerated|entered|proceeded|attempted|drove|steered|swerved|merged|changed|failed|did not|allowed|let|lost|drifted|veered|crossed|continued|ran|tried|made|moved|had (?:his|her|its|the) (?:left |right )?(?:turn )?signal on|had (?:just )?(?:stopped|slowed|begun|started|pulled|come|entered|turned|been (?:stopped|traveling|driving|waiting|slowing))|was (?:traveling|driving|going|stopped|slowing|turning|backing|attempting))\b)|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;
@@ -467,7 +472,10 @@ string WithoutDistantJunctions(const string& s) {
       // "the nearest ramp was about 700 meters away".
       // "having entered by way of an exit ramp approximately 5 km to the east".
       R"(|\b(?:ramp|interchange)\s+(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:km|kilometers?|kilometres?|mi|miles?|m|meters?|metres?|ft|feet)\b[^.;]{0,25}|)"
-      R"(\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50})");
+      R"(\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50}|)"
+      // "backing toward the property's driveway, which was about 40 m
+      // behind him".
+      R"(\bdriveway\s*,?\s+(?:which|that)\s+(?:was|lay|sat|is)\s+(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:m|meters?|metres?|ft|feet|yards?)\s+(?:behind|ahead|away|back|beyond|further|farther)\b)");
   // A queue stopped for the light there is at it (intersection related):
   // "stopped for a red signal at the next intersection, 30 meters ahead".
   static const regex kQueuedForIt(

@@ -3677,5 +3677,87 @@ TEST(NarrativeExtractorTest, TheRoadTheCrashRoadMeetsIsAnother) {
   EXPECT_EQ(side.road.lanes_per_direction.value, 1);
   EXPECT_EQ(side.road.lanes_total.value, 2);
 }
+TEST(NarrativeExtractorTest, AFarmLaneIsADrivewayWhenUsedAndALandmarkOtherwise) {
+  // Passed on the left as it turned into a farm lane: a turn across path at
+  // the driveway, its driver's age the subject of the turn.
+  const AccidentRecord used = kExtractor.Extract(
+      "V1 was westbound behind a 1993 Ford Ranger pickup (V2) on a two-lane rural highway. V2's 66-year-old "
+      "driver had his left signal on and was slowing to turn into the farm lane, where he lives. The driver "
+      "of V1 pulled left to pass just as V2 began its turn. The front of V1 struck the left side of V2 in the "
+      "eastbound lane.");
+  ASSERT_EQ(used.vehicles.size(), 2u);
+  EXPECT_EQ(used.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(used.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(used.crash.location.value, CrashLocation::kDriveway);
+  const AccidentRecord landmark = kExtractor.Extract(
+      "V1 was southbound on a two-lane road. Just north of a farm lane, V1 drifted gradually across the "
+      "centerline into the northbound lane, and the front of V1 struck the front of V2.");
+  EXPECT_EQ(landmark.crash.location.value, CrashLocation::kSegment);
+  // A driveway 40 m behind the vehicle backing toward it is not the place.
+  const AccidentRecord behind = kExtractor.Extract(
+      "V1 stopped in the northbound lane of a two-lane rural road and began backing toward the property's "
+      "driveway, which was about 40 m behind him. V2 had stopped behind V1. The back of V1 struck the front "
+      "of V2.");
+  EXPECT_EQ(behind.crash.location.value, CrashLocation::kSegment);
+}
+TEST(NarrativeExtractorTest, RampsFlashersAndSlowingIntoATurn) {
+  // "accelerating up the ramp to merge" where the ramp joins the freeway.
+  const AccidentRecord ramp = kExtractor.Extract(
+      "This crash occurred at the point where a one-lane entrance ramp joins the eastbound lanes of a freeway. "
+      "V1 was accelerating up the ramp to merge. V2 was eastbound in the right through lane. V1 moved left "
+      "alongside V2, and the left side of V1 sideswiped the right side of V2.");
+  EXPECT_EQ(ramp.crash.location.value, CrashLocation::kRamp);
+  EXPECT_EQ(ramp.road.kind.value, RoadKind::kRamp);
+  // "four-way flashers" are hazard lights, not a 4-way junction.
+  const AccidentRecord flashers = kExtractor.Extract(
+      "V2, a stake-bed truck, was eastbound on a two-lane rural road climbing the hill at about 15 mph with "
+      "its four-way flashers on. V1 was also eastbound. The front of V1 struck the back of V2.");
+  EXPECT_EQ(flashers.crash.location.value, CrashLocation::kSegment);
+  EXPECT_NE(flashers.road.kind.value, RoadKind::kIntersection);
+  // "slowed and began a left turn": slowing before the turn.
+  const AccidentRecord slowed = kExtractor.Extract(
+      "Vehicle 1 was eastbound on the main road. Its driver, a 30-year-old man, slowed and began a left turn "
+      "onto the residential street. Vehicle 2 was westbound on the main road. The front of Vehicle 2 struck "
+      "the right front of Vehicle 1.");
+  ASSERT_EQ(slowed.vehicles.size(), 2u);
+  EXPECT_EQ(slowed.vehicles[0].pre_event.value, Movement::kSlowing);
+}
+TEST(NarrativeExtractorTest, WhatTheDriverSawTheOtherDoIsNotHisOwn) {
+  const AccidentRecord missed = kExtractor.Extract(
+      "Vehicle 2 was eastbound and slowing to turn right into a driveway. Vehicle 1 was eastbound behind it. "
+      "The front of Vehicle 1 struck the back of Vehicle 2. The driver of Vehicle 1 said he was looking at a "
+      "combine in the field and \"didn't notice she was slowing.\"");
+  ASSERT_EQ(missed.vehicles.size(), 2u);
+  EXPECT_EQ(missed.vehicles[0].pre_event.value, Movement::kStraight);
+  const AccidentRecord reacted = kExtractor.Extract(
+      "Vehicle 2 was eastbound in the right lane and braked to stop for a yellow signal. Vehicle 1 was "
+      "following in the same lane. The driver of Vehicle 1 said he expected it to go through. When it stopped "
+      "he braked hard, but the front of Vehicle 1 struck the back of Vehicle 2.");
+  ASSERT_EQ(reacted.vehicles.size(), 2u);
+  EXPECT_EQ(reacted.vehicles[0].pre_event.value, Movement::kStraight);
+}
+TEST(NarrativeExtractorTest, AHeadOnToldWithAPronounSubject) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The Ford (V1) was northbound in the inside lane of a four-lane undivided street. Its 47-year-old male "
+      "driver allowed it to drift across the double yellow line into the southbound inside lane, where it "
+      "struck the Nissan (V2) head-on.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+}
+TEST(NarrativeExtractorTest, OneUnnumberedVehicleThatRolledOrPassedABusShelter) {
+  const AccidentRecord rolled = kExtractor.Extract(
+      "The single-vehicle rollover happened on a two-lane rural road. The vehicle, a 1997 Ford Escort sedan, "
+      "was westbound. Entering the curve, the rear of the car began to slide out; it departed the left side "
+      "of the road, tripped in the soft shoulder and rolled two quarter turns.");
+  EXPECT_EQ(rolled.participant_count.value, 1);
+  EXPECT_EQ(rolled.crash.type.value, CrashType::kSingleVehicle);
+  const AccidentRecord shelter = kExtractor.Extract(
+      "A 1999 Buick Century was northbound in the left lane of a four-lane city street. Witnesses in a bus "
+      "shelter said the Buick drifted to the right across the curb lane, mounted the curb, and struck a steel "
+      "sign pole with its front.");
+  EXPECT_EQ(shelter.participant_count.value, 1);
+  EXPECT_EQ(shelter.crash.type.value, CrashType::kSingleVehicle);
+}
 }  // namespace
 }  // namespace accsim
