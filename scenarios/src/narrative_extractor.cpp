@@ -47,7 +47,7 @@ void ReadDescriptions(Reading& rd) {
   std::map<int, string>& descriptions = rd.descriptions;
   std::map<int, string>& bodies = rd.bodies;
   static const regex kDesc(
-      R"(^v([1-9])\s*(?:,\s*|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
+      R"(^v([1-9])\s*(?:,\s*|\s+-{1,2}\s+|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|hauling|carrying|loaded|laden|returning|owned|registered|belonging|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
   static const regex kBody(R"(^\s*,\s*([a-z0-9][a-z0-9 -]{1,40}?)\s+(?:was|that|which|were)\b)");
   for (const Sentence& s : sentences) {
     for (const Ref& ref : RefsIn(s.text)) {
@@ -116,7 +116,7 @@ void ReadDescriptions(Reading& rd) {
     // "v2, a 2001 international 9200 tractor pulling a loaded van
     // semitrailer": "the semitrailer", "the trailer" are v2's.
     static const regex kTowedLoad(
-        R"(\bv([1-9]),\s+an?\s+[^,;]{0,60}?\b(?:pulling|towing|hauling)\s+(?:an?\s+)?((?:[\w-]+\s+){0,3}?)(semi-?trailer|trailer|camper|boat)\b)");
+        R"(\bv([1-9]),\s+an?\s+[^,;]{0,60}?\b(?:pulling|towing|hauling)\s+(?:an?\s+)?((?:[\w-]+\s+){0,3}?)(semi-?trailer|trailer|camper|boat|wagon|cart|implement)\b)");
     for (const Sentence& s : sentences) {
       for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kTowedLoad); it != std::sregex_iterator(); ++it) {
         const int v = std::stoi((*it)[1].str());
@@ -331,7 +331,10 @@ void SplitSegments(Reading& rd) {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b)");
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b|)"
+      // (Not its own passengers: "driven by a 38 year-old female with one
+      // passenger was traveling southbound".)
+      R"(\b(?:two|three|several|\d+)\s+(?:\w+\s+)?(?:witness(?:es)?|pedestrians|bystanders|officers|troopers|deputies|flaggers|cyclists|bicyclists)\b)");
   std::vector<Segment>& segments = rd.segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -429,13 +432,23 @@ void SplitSegments(Reading& rd) {
         const string before = Before(t, at, 16);
         const size_t cut_at = std::regex_search(before, bm, kBoundBefore) ? at - static_cast<size_t>(bm.length(0)) : at;
         // The driver's own clause after it is this vehicle's again: "a bus
-        // at the curb blocked her view, and she pulled out past it".
+        // at the curb blocked her view, and she pulled out past it", "a box
+        // truck blocked his view, and that he "inched out"".
         static const regex kDriverResumes(
-            R"((?:,\s*(?:and|so|but|then)|\b(?:and|then))\s+(?:then\s+)?(?:he|she)\s+(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b)");
+            R"((?:,\s*(?:and|so|but|then)|\b(?:and|then))\s+(?:that\s+)?(?:then\s+)?"?\s*(?:he|she)\s+"?\s*(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b)");
         smatch rm;
         const string rest = t.substr(at);
         t = t.substr(0, cut_at);
-        if (std::regex_search(rest, rm, kDriverResumes)) t += " " + rest.substr(static_cast<size_t>(rm.position()));
+        // So is the next verb of its list after a person it waited for:
+        // "stopped at the stop sign, waited for a pedestrian to finish
+        // crossing, and then started across".
+        static const regex kPerson(R"(\b(?:pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist|witness)\b)");
+        static const regex kListResumes(R"(,\s*(?:and\s+)?then\s+\w+|,\s*and\s+(?:then\s+)?(?:\w+ed|began|started)\b)");
+        if (std::regex_search(rest, rm, kDriverResumes)) {
+          t += " " + rest.substr(static_cast<size_t>(rm.position()));
+        } else if (Has(it->str(), kPerson) && std::regex_search(rest, rm, kListResumes)) {
+          t += " " + rest.substr(static_cast<size_t>(rm.position()));
+        }
         break;
       }
       return t;
@@ -444,7 +457,13 @@ void SplitSegments(Reading& rd) {
       // Coded sentences name their vehicle first ("the critical precrash
       // event for v1 was ... this vehicle ..."); others continue the focus.
       const int owner = s.kind == Kind::kCoding && !s.refs.empty() ? s.refs.front().vehicle : focus;
-      if (owner > 0) segments.push_back({owner, i, cut(0, first)});
+      // A sentence about the scene is no vehicle's, whoever was named last
+      // ("v2 was a tractor-trailer. location is a divided highway: 2
+      // eastbound lanes and 2 westbound lanes").
+      static const regex kSceneSubject(
+          R"(^\s*(?:(?:the\s+)?(?:crash\s+)?location\b|the\s+(?:posted\s+)?speed limit\b|the\s+(?:\w+\s+){0,2}?(?:road|roadway|highway|street|intersection|trafficway)\s+(?:was|is|has|had|runs|ran|curves|curved)\b|(?:the\s+)?(?:weather|sky|pavement|surface|road surface)\s+(?:was|is|were)\b))");
+      const bool scene = s.refs.empty() && Has(s.text, kSceneSubject);
+      if (owner > 0 && !scene) segments.push_back({owner, i, cut(0, first)});
     }
     const auto subject = std::find_if(starts.begin(), starts.end(), [](const Start& st) { return !st.perceived; });
     if (subject != starts.end()) {

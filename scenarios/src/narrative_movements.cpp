@@ -81,7 +81,10 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kLaneChange(
       R"(\bchang\w*\s+lanes?\b|\blane change|\b(?:moved|moving|steered|pulled|cut|swung)\s+(?:over\s+)?to the (?:left|right)\s+to (?:reach|take|get to|get into|make|enter|exit|pass|go around|prepare for|set up for|line up for)\b|\b(?:(?:began|started|tried|attempted) to move|moved|moving|steered|steering|swerved|veered|drifted|drifting|merged|pulled|pulling|crossed)\s+(?:from\s+the\s+\w+\s+lane\s+|(?:\w+\s+){0,3}?)into\s+(?:(?:the\s+)?(?:left|right|adjacent|other|next|inside|outside|center|middle|median|curb|offside|nearside|fast|slow|passing|overtaking|1st|2nd|3rd)\s+(?:travel\s+)?lane|lane\s+[1-9]\b)|\bre-?entered the roadway from the shoulder|)"
       // "moved right toward lane one in order to turn right".
-      R"(\b(?:moved|moving|steered|pulled|cut|swung|eased)\s+(?:over\s+)?(?:to\s+the\s+)?(?:left|right)\s+(?:toward|towards)\s+(?:the\s+)?(?:lane\s+\d|(?:left|right|curb|adjacent|next|outside|inside|center|middle)\s+lane)\b)");
+      R"(\b(?:moved|moving|steered|pulled|cut|swung|eased)\s+(?:over\s+)?(?:to\s+the\s+)?(?:left|right)\s+(?:toward|towards)\s+(?:the\s+)?(?:lane\s+\d|(?:left|right|curb|adjacent|next|outside|inside|center|middle)\s+lane)\b|)"
+      // "wanted to exit at an off-ramp 0.8 km ahead and moved right".
+      // (Not "saw the car come over and moved right": an avoidance.)
+      R"(\b(?:wanted|intended|planned|needed|decided|was going|was trying|tried|attempting)\s+to\s+(?:exit|get off|take|reach|enter|turn|make|pass)\b(?:[^.;]|\.\d){0,60}?\band\s+(?:then\s+)?(?:moved|cut|swung|eased)\s+(?:over\s+)?(?:to\s+the\s+)?(?:left|right)\b)");
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
@@ -139,8 +142,10 @@ void ReadMovement(const string& text, MovementEvidence& e) {
     }
   }
   static const regex kEntered(
-      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
-      R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b)");
+      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|(?:inched|crept|nosed|edged) (?:out|forward|into|onto)|went for it|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
+      R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b|)"
+      // "she accelerated into the turn".
+      R"(\b(?:accelerated|moved|went|eased|pulled|proceeded|started|began|drove)\s+(?:forward\s+|ahead\s+|out\s+)?into\s+(?:the|its|his|her|a)\s+(?:left\s+|right\s+)?turn\b(?![- ](?:lanes?|bays?|pocket|only)\b))");
   // A lane's name is not a manoeuvre: "in the two-way left turn lane".
   static const regex kTurnLane(
       R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b|\b(?:left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b)");
@@ -212,7 +217,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   if (Has(std::regex_replace(t, kSlowForConditions, " "), kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
   static const regex kStarted(
-      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
+      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating|across|through)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
   if (Has(t, kStarted)) e.started = true;
   static const regex kOnGreen(
       R"(\b(?:when|once|after|as soon as|as)\s+(?:the\s+)?(?:traffic\s+)?(?:light|signal)\s+(?:for\s+[\w ]{1,30}?\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b)");

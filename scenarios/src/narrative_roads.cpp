@@ -71,13 +71,16 @@ bool OfAnotherRoad(const RoadStatement& rs, const RoadStatement& best) {
 
 std::optional<int> AxisIn(const string& s) {
   static const regex kAxis(
-      R"(\b(east|west)[- ]?(?:/|-|and)?\s*(?:west|east)\b|\b(north|south)[- ]?(?:/|-|and)?\s*(?:south|north)\b|\b(north|south|east|west)[- ]?bound\b|\b(n|s)/(?:s|n)\b|\b(e|w)/(?:w|e)\b)");
+      R"(\b(east|west)[- ]?(?:/|-|and)?\s*(?:west|east)\b|\b(north|south)[- ]?(?:/|-|and)?\s*(?:south|north)\b|\b(north|south|east|west)[- ]?bound\b|\b(n|s)/(?:s|n)\b|\b(e|w)/(?:w|e)\b|)"
+      // "entering from the east is a two-lane residential street".
+      R"(\b(?:enter\w*|com(?:es|ing)|join\w*|approach\w*|runs?|leads?|extends?|branch\w*)\s+(?:in\s+)?from\s+the\s+(north|south|east|west)\b)");
   std::optional<int> last;
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kAxis); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
     if (m[1].matched || m[5].matched) last = 0;
     else if (m[2].matched || m[4].matched) last = 1;
     else if (m[3].matched) last = (m[3].str()[0] == 'e' || m[3].str()[0] == 'w') ? 0 : 1;
+    else if (m[6].matched) last = (m[6].str()[0] == 'e' || m[6].str()[0] == 'w') ? 0 : 1;
   }
   return last;
 }
@@ -466,7 +469,7 @@ void ReadRoadKind(Reading& rd) {
   }
   scene = WithoutDistantJunctions(scene);
   static const regex kTJunction(
-      R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
+      R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\btee[sd]?\s+into\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
   static const regex kIntersection(
       R"(\bintersection\b|(?:^|[^a-z-])junction\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|)" +
       WhereRoadsMeet());
@@ -1462,6 +1465,27 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
                         order++, ClauseRoad(s.text, at), ctx.NamedAt(index, at)});
     }
   }
+  // A value in brackets right after a road names that road's limit, with
+  // or without a limit word: "a 2-lane side road (35 mph, 56 kmh) ends at
+  // a state highway posted at 45 mph".
+  {
+    static const regex kRoadBracketValue(R"(\b)" + RoadNoun() +
+                                         R"(\s*\(\s*(\d{2,3})\s*(kmh|mph)\s*(?:[,/]\s*\d{2,3}\s*(?:kmh|mph)\s*)?\))");
+    for (const Sentence& s : sentences) {
+      if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
+      const size_t index = static_cast<size_t>(&s - sentences.data());
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kRoadBracketValue); it != std::sregex_iterator();
+           ++it) {
+        const double value = std::stod((*it)[2].str());
+        const bool kmh = (*it)[3].str() == "kmh";
+        const size_t at = static_cast<size_t>(it->position(2));
+        if (value < 5 || value > 180) continue;
+        limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", OwnerAt(s, at),
+                          ctx.InheritedAxis(index, AxisIn(s.text.substr(0, at))), order++, (*it)[1].str(),
+                          ctx.NamedAt(index, at)});
+      }
+    }
+  }
   // No limit word anywhere: a value that describes the road itself ("a
   // 45 mph two-lane road", "the road is two lanes, 45 mph") is its limit;
   // one after a travel word is a vehicle's speed.
@@ -1474,18 +1498,13 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     // residential streets, both two-lane two-way, straight and level, 25 mph").
     static const regex kRoadListValue(
         R"(\b(?:roads?|roadways?|streets?|highways?|intersection|lanes?|two-way|level|straight|curve\w*)\b[^.]{0,80}?,\s*(\d{2,3})\s*(kmh|mph)\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?(?:[,;]|$))");
-    // ... or stands in brackets after the road, in any sentence: "was
-    // northbound on a straight, level 2-lane rural road (45 mph, 72 kmh)".
-    static const regex kRoadBracketValue(
-        R"(\b(?:road|roadway|street|highway|route)\s*\(\s*(\d{2,3})\s*(kmh|mph)\s*(?:[,/]\s*\d{2,3}\s*(?:kmh|mph)\s*)?\))");
     static const regex kTravelWord(
         R"(\b(?:travel\w*|going|driving|doing|moving|speed|estimated|approximately|about|around|between|at)\s+(?:\w+\s+){0,2}$)");
     for (const Sentence& s : sentences) {
       if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
       smatch m;
       const bool subject = std::regex_search(s.text, m, kRoadSubject) && s.refs.empty();
-      const bool listed = !subject && ((s.refs.empty() && std::regex_search(s.text, m, kRoadListValue)) ||
-                                       std::regex_search(s.text, m, kRoadBracketValue));
+      const bool listed = !subject && s.refs.empty() && std::regex_search(s.text, m, kRoadListValue);
       if (!subject && !listed && !std::regex_search(s.text, m, kRoadValue)) continue;
       const size_t pos = static_cast<size_t>(m.position(1));
       if (Has(Before(s.text, pos, 30), kTravelWord)) continue;
@@ -1585,7 +1604,7 @@ bool LeavesDriveway(const string& t) {
 
 const regex& DrivewayWord() {
   static const regex kDriveway(
-      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road|lane)\b|\b(?:farm|field|ranch|pasture) (?:lane|entrance|access|drive|gate)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road|lane)\b|\b(?:farm|field|ranch|pasture) (?:lane|entrance|access|drive|gate)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot|plaza|mall|center|centre|market|supermarket|school|church|bank|dealership|complex|office) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
   return kDriveway;
 }
 

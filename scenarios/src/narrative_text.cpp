@@ -78,6 +78,17 @@ string Normalise(std::string_view in) {
   // "u.s. 30", "u.s. route 1": the route's name, not a sentence end.
   static const regex kUsRoute(R"(\bu\.\s?s\.\s*(?=\d|route\b|highway\b|hwy\b|rt\b))");
   s = std::regex_replace(s, kUsRoute, "us ");
+  // NASS researchers' shorthand: "cpe v1: other vehicle stopped", "cr =
+  // inadequate surveillance".
+  static const regex kCpe(R"(\bcpe\b)");
+  s = std::regex_replace(s, kCpe, "critical precrash event");
+  static const regex kCr(R"(\bcr\b(?=\s*(?::|=|was\b|not\b|coded\b|for\b|v[1-9]\b|vehicle\b)))");
+  s = std::regex_replace(s, kCr, "critical reason");
+  static const regex kCodedEquals(R"((critical (?:precrash event|reason)[^=.;]{0,25}?)\s*=\s*)");
+  s = std::regex_replace(s, kCodedEquals, "$1 was ");
+  // "the roadway is signed at 80 km/h": posted.
+  static const regex kSignedAt(R"(\b(?:sign-?posted|signed)\s+(?:at|for)\s+(?=\d))");
+  s = std::regex_replace(s, kSignedAt, "posted at ");
   // "with its four-way flashers on": hazard lights, not a 4-way junction.
   static const regex kFourWayFlashers(R"(\b(?:4|four)[- ]way\s+(?=(?:emergency\s+|hazard\s+)?(?:flashers?|hazards?|lights|blinkers|signals)\b))");
   s = std::regex_replace(s, kFourWayFlashers, "hazard ");
@@ -475,7 +486,8 @@ string WithoutDistantJunctions(const string& s) {
       R"(\b(?:the\s+)?(?:nearest|closest)\s+(?:[\w/-]+\s+){0,2}?(?:on-?ramp|off-?ramp|ramp|intersection|junction|cross street|interchange)s?\b[^.;]{0,50}|)"
       // "backing toward the property's driveway, which was about 40 m
       // behind him".
-      R"(\bdriveway\s*,?\s+(?:which|that)\s+(?:was|lay|sat|is)\s+(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:m|meters?|metres?|ft|feet|yards?)\s+(?:behind|ahead|away|back|beyond|further|farther)\b)");
+      // ("turn right into a mall entrance about 60 m ahead".)
+      R"(\b(?:driveway|entrance|exit)\s*,?\s+(?:(?:which|that)\s+(?:was|lay|sat|is)\s+)?(?:located\s+)?(?:approximately\s+|about\s+|some\s+|roughly\s+|nearly\s+)?\d+(?:\.\d+)?\s*(?:m|meters?|metres?|ft|feet|yards?)\s+(?:behind|ahead|away|back|beyond|further|farther)\b)");
   // A queue stopped for the light there is at it (intersection related):
   // "stopped for a red signal at the next intersection, 30 meters ahead".
   static const regex kQueuedForIt(
@@ -593,7 +605,7 @@ string Detail(const AreaWords& a) {
 
 const regex& ContactVerb() {
   static const regex kContact(
-      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged)\b)");
+      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged|(?:rolled|crept|creep|creeping|coasted|moved)\s+(?:forward\s+|ahead\s+|back(?:ward)?\s+)?into(?=\s+(?:the\s+)?v[1-9]'s\s+(?:rear|back|front|side|left|right|bumper)))\b)");
   return kContact;
 }
 

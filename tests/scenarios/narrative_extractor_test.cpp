@@ -3759,5 +3759,150 @@ TEST(NarrativeExtractorTest, OneUnnumberedVehicleThatRolledOrPassedABusShelter) 
   EXPECT_EQ(shelter.participant_count.value, 1);
   EXPECT_EQ(shelter.crash.type.value, CrashType::kSingleVehicle);
 }
+TEST(NarrativeExtractorTest, ADescriptionBetweenDashesAndWhatTheTruckHauled) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 - a 2005 Freightliner tractor hauling a flatbed semitrailer - was northbound on a two-lane rural "
+      "highway. V2, a 2001 Honda Civic, was southbound. The truck drifted left across the center line and the "
+      "front of V1 struck the front of V2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].description.value, "2005 freightliner tractor");
+  EXPECT_EQ(r.vehicles[0].vehicle_class.value, VehicleClass::kTruck);
+  EXPECT_EQ(r.vehicles[0].vehicle_class.source, Provenance::kInferred);
+}
+TEST(NarrativeExtractorTest, StartedAcrossAfterWaitingForAPedestrian) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was northbound on the side street and stopped at the stop sign, waited for a pedestrian to finish "
+      "crossing, and then started across the four-lane highway. V2 was eastbound on the highway. The front of "
+      "V2 struck the left side of V1 in the intersection.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
+TEST(NarrativeExtractorTest, ACarThatCreptIntoTheRearOfAnother) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V2 was stopped in traffic in the eastbound lane of a two-lane road. V1 was stopped behind it. The "
+      "driver of V1 took her foot off the brake and V1 crept forward into V2's rear.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+}
+TEST(NarrativeExtractorTest, TheResearchersShorthandForCodedEvents) {
+  // "CPE for V1 = other vehicle stopped": the vehicle ahead was stopped.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was eastbound on a two-lane road. V2 was ahead in the same lane. The front of V1 struck the back of "
+      "V2. CPE for V1 = other vehicle stopped in lane. CR for V1 = driver inattention.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStopped);
+}
+TEST(NarrativeExtractorTest, ARoadThatTeesIntoAnother) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash happened where a two-lane county road tees into a four-lane state highway. V1 was southbound "
+      "on the county road and turned left onto the highway. V2 was eastbound on the highway. The front of V2 "
+      "struck the left side of V1.");
+  EXPECT_EQ(r.road.kind.value, RoadKind::kTJunction);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+}
+TEST(NarrativeExtractorTest, AnEntranceAheadIsNotWhereTheyCrashed) {
+  const AccidentRecord ahead = kExtractor.Extract(
+      "V1 was eastbound on a four-lane undivided arterial, slowing to turn right into a mall entrance about "
+      "60 m ahead. V2 was eastbound behind it. The front of V2 struck the back of V1.");
+  EXPECT_EQ(ahead.crash.location.value, CrashLocation::kSegment);
+  // ... and one it turned into is.
+  const AccidentRecord into = kExtractor.Extract(
+      "V1 was eastbound on a four-lane undivided arterial and turned left into a plaza entrance. V2 was "
+      "westbound. The front of V2 struck the right side of V1.");
+  EXPECT_EQ(into.crash.location.value, CrashLocation::kDriveway);
+}
+TEST(NarrativeExtractorTest, ALimitInBracketsAfterTheSideRoadIsItsOwn) {
+  const AccidentRecord r = kExtractor.Extract(
+      "A 2-lane side road (35 mph, 56 kmh) ends at a state highway posted at 45 mph. V1 was northbound on the "
+      "side road approaching the highway. V2 was ahead of it, stopped at the stop sign. The front of V1 struck "
+      "the back of V2.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+  EXPECT_EQ(r.road.speed_limit_unit.value, "mph");
+}
+TEST(NarrativeExtractorTest, ASceneSentenceIsNoVehiclesOwn) {
+  // The lanes of the highway named after V2's description are not V2's way.
+  const AccidentRecord r = kExtractor.Extract(
+      "The case vehicle (V1) was a 2001 Ford Windstar minivan. The other vehicle (V2) was a 2003 Volvo tractor. "
+      "Location is a rural four-lane divided highway: two eastbound lanes and two westbound lanes separated by a "
+      "grass median. V1 was eastbound in the left lane. The van rotated clockwise and crossed the median into "
+      "the westbound lanes. V2 was westbound in the left lane. The front of V2 struck the right side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].travel.value, std::optional<Compass>(Compass::kWest));
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeOpposite);
+}
+TEST(NarrativeExtractorTest, ATurnMeantAndThenTaken) {
+  // "intended to turn left ... accelerated into the turn".
+  const AccidentRecord into = kExtractor.Extract(
+      "V2 was northbound on the stem of a T-intersection and stopped at the stop sign. The driver intended to "
+      "turn left and go west. V1 was eastbound on the through road. V2 accelerated into the turn, and the front "
+      "of V1 struck the left side of V2.");
+  ASSERT_EQ(into.vehicles.size(), 2u);
+  EXPECT_EQ(into.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(into.crash.type.value, CrashType::kTurnIntoPath);
+  // "waiting to turn left ... his view was blocked, and that he 'inched out
+  // and then went for it'".
+  const AccidentRecord went = kExtractor.Extract(
+      "Vehicle #1 was northbound in the left through lane of a four-lane divided boulevard. Vehicle #2 was "
+      "southbound in the left-turn bay, waiting to turn left onto a cross street. The Equinox driver stated "
+      "that a northbound box truck in the opposing bay blocked his view, and that he \"inched out and then went "
+      "for it.\" The front of Vehicle #1 struck the right side of Vehicle #2 in the intersection.");
+  ASSERT_EQ(went.vehicles.size(), 2u);
+  EXPECT_EQ(went.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(went.crash.type.value, CrashType::kTurnAcrossPath);
+  // "moved into the turn lane" is no turn.
+  const AccidentRecord lane = kExtractor.Extract(
+      "V1 was westbound in the inside lane of a five-lane road. Its driver had already moved into the turn lane "
+      "when the front of V1 struck the front of V2, which was stopped there facing east.");
+  ASSERT_EQ(lane.vehicles.size(), 2u);
+  EXPECT_NE(lane.vehicles[0].movement.value, Movement::kTurnLeft);
+}
+TEST(NarrativeExtractorTest, TheWagonATractorPullsIsItsOwn) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle one (V1) was traveling west on a two-lane rural highway. Vehicle two (V2), a 1985 John Deere "
+      "farm tractor pulling a loaded hay wagon, was also westbound ahead of V1. He braked and steered left, but "
+      "the right front of V1 struck the back of the hay wagon.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.crash.struck.value, "V2");
+}
+TEST(NarrativeExtractorTest, TheSideStreetEnteringFromTheEastIsTheTurnersRoad) {
+  const AccidentRecord r = kExtractor.Extract(
+      "This crash happened at a T-intersection. The north-south trafficway is a four-lane, two-way undivided "
+      "state highway (two lanes in each direction) with a posted speed limit of 50 mph. Entering from the east "
+      "is a two-lane residential street posted at 25 mph. V1 was westbound on the side street. She stopped at "
+      "the stop sign and then began a right turn to go north. V2 was northbound in the right lane of the "
+      "highway. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+}
+TEST(NarrativeExtractorTest, ARoadSignedAtItsLimitAndWitnessesWhoStopped) {
+  const AccidentRecord signed_at = kExtractor.Extract(
+      "The crash occurred on a two-lane highway in a rolling rural area. The roadway is signed at 80 km/h "
+      "(50 mph). V1 was westbound. V2 was eastbound and drifted across the centerline. The front of V2 struck "
+      "the front of V1.");
+  EXPECT_NEAR(signed_at.road.speed_limit_mps.value, 80 / 3.6, 1e-6);
+  EXPECT_EQ(signed_at.road.speed_limit_unit.value, "km/h");
+  const AccidentRecord witnesses = kExtractor.Extract(
+      "V1 was southbound in the inside lane of the north-south street. V2 was westbound in the center lane of "
+      "the boulevard and had a green signal. Two independent witnesses stopped on the boulevard stated that the "
+      "southbound signal had been red. The front of V1 struck the right side of V2.");
+  ASSERT_EQ(witnesses.vehicles.size(), 2u);
+  EXPECT_EQ(witnesses.vehicles[1].pre_event.value, Movement::kStraight);
+}
+TEST(NarrativeExtractorTest, MovingOverToReachAnExitIsALaneChange) {
+  const AccidentRecord exit = kExtractor.Extract(
+      "V1 was in the center eastbound lane of a six-lane divided highway. V2, a tractor-trailer, was in the "
+      "right eastbound lane slightly behind V1. The driver of V1 wanted to exit at an off-ramp 0.8 km ahead and "
+      "moved right. The right rear side of V1 contacted the front of V2.");
+  ASSERT_EQ(exit.vehicles.size(), 2u);
+  EXPECT_EQ(exit.vehicles[0].movement.value, Movement::kChangingLanes);
+  // ... and moving right to get out of the way is not.
+  const AccidentRecord avoid = kExtractor.Extract(
+      "V1 was northbound on a two-lane road. V2 was southbound and drifted over the center line. The driver of "
+      "V1 stated he saw the car's headlights start to come over and moved right, but the left side of V2 struck "
+      "the left side of V1.");
+  ASSERT_EQ(avoid.vehicles.size(), 2u);
+  EXPECT_EQ(avoid.vehicles[0].movement.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
