@@ -54,7 +54,8 @@ TEST(ExtractionEvalTest, ReadsReportsInOtherStyles) {
 // every first look). Set A's labeller codes a turner or a lane changer by its
 // own manoeuvre, and A's, B's, D's and F's a lead vehicle struck while braking
 // as decelerating; the real NMVCCS coding, which the rules follow, does not
-// (crossing/23, straight/17), hence their lower driving-action floors.
+// (crossing/23, straight/17), hence their lower driving-action floors; AT's
+// and AW's code turns and lane changes by what the vehicle did, hence theirs.
 TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
   struct Set {
     const char* dir;
@@ -164,6 +165,12 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_au", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
         {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.95}}},
+      {"nmvccs_style_aw", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.97},
+        {"collision_location", 0.97}, {"driving_actions", 0.75}, {"crash_type", 0.92}}},
+      {"nmvccs_style_ax", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+        {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.95}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -186,7 +193,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
   for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v", "ciren_style_z",
                           "ciren_style_ab", "ciren_style_ad", "ciren_style_af",
                           "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar",
-                          "ciren_style_av"}) {
+                          "ciren_style_av", "ciren_style_ay"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});
