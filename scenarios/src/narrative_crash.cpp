@@ -241,7 +241,9 @@ void ReadContact(Reading& rd) {
         clause = static_cast<size_t>(it->position());
       }
     }
-    for (const string& part : {s.substr(clause), s}) {
+    const string contact_clause = s.substr(clause);
+    for (const string* part_of : {&contact_clause, &s}) {
+      const string& part = *part_of;
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kOfV); it != std::sregex_iterator(); ++it) {
         note(std::stoi((*it)[2].str()), (*it)[1].str());
       }
@@ -250,6 +252,11 @@ void ReadContact(Reading& rd) {
       }
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kVOn); it != std::sregex_iterator(); ++it) {
         note(std::stoi((*it)[1].str()), (*it)[2].str());
+      }
+      // "the rear of the pickup came around ..., where its left side struck
+      // the guardrail": the contact clause's own words first.
+      if (smatch cm; clause > 0 && part_of == &contact_clause && std::regex_search(part, cm, kItsArea)) {
+        note(passive ? struck : striker, cm[1].str());
       }
     }
     smatch am;

@@ -3904,5 +3904,14 @@ TEST(NarrativeExtractorTest, MovingOverToReachAnExitIsALaneChange) {
   ASSERT_EQ(avoid.vehicles.size(), 2u);
   EXPECT_EQ(avoid.vehicles[0].movement.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, TheContactClauseNamesTheSideThatStruck) {
+  // The rear that came around is not what struck the guardrail.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 2003 Ford F-150 pickup, left the interstate on the exit ramp at roughly 55 mph. Partway around the "
+      "curve he braked hard. The rear of the pickup came around and the truck slid clockwise, sliding off the "
+      "right side of the ramp, where its left side struck the W-beam guardrail.");
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kLeft);
+}
 }  // namespace
 }  // namespace accsim
