@@ -1558,7 +1558,9 @@ void InferSpeedLimit(Reading& rd) {
   // posted along this road", "there was no posted speed limit on the ramp")
   // is coded "no statutory limit" (the development set's t/11).
   static const regex kNoLimit(
-      R"(\b(?:no|not|without)\s+(?:a\s+|any\s+)?(?:posted\s+)?speed\s+limit\b|\bno\s+(?:posted\s+)?(?:speed\s+)?limit\s+signs?\b|\bspeed limit\s+(?:was|is)\s+not\s+posted\b|\bunposted\b)");
+      R"(\b(?:no|not|without)\s+(?:a\s+|any\s+)?(?:posted\s+)?speed\s+limit\b|\bno\s+(?:posted\s+)?(?:speed\s+)?limit\s+signs?\b|\bspeed limit\s+(?:was|is)\s+not\s+posted\b|\bunposted\b|)"
+      // "neither street had a posted speed limit", "neither road was posted".
+      R"(\bneither\s+(?:\w+\s+){0,3}?(?:had|has|was|is)\s+(?:a\s+)?(?:posted\s+)?(?:speed\s+limit|posted)\b|\bno\s+limit\s+(?:was|is)\s+posted\b)");
   if (Has(scene, kNoLimit)) return;
   if (!r.road.speed_limit_mps.known()) {
     // The typical limit of V1's road as its own text describes it ("a

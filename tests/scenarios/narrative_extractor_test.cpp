@@ -3913,5 +3913,12 @@ TEST(NarrativeExtractorTest, TheContactClauseNamesTheSideThatStruck) {
   EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
   EXPECT_EQ(r.crash.striking_area.value, DamageArea::kLeft);
 }
+TEST(NarrativeExtractorTest, NeitherStreetPostedIsNoLimit) {
+  const AccidentRecord r = kExtractor.Extract(
+      "This crash occurred at an all-way stop in a residential neighborhood. Both streets are two-lane, two-way, "
+      "straight and level. Neither street had a posted speed limit. Vehicle #1 was westbound and stopped at the "
+      "stop sign. Vehicle #2 was southbound. The front of Vehicle #2 struck the right side of Vehicle #1.");
+  EXPECT_FALSE(r.road.speed_limit_mps.known());
+}
 }  // namespace
 }  // namespace accsim
