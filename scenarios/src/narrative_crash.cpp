@@ -167,7 +167,9 @@ void ReadContact(Reading& rd) {
     // taken as the striker, the other as struck.
     // "v1 had slowed when v2 struck it": a pronoun object is the other
     // vehicle named before the verb.
-    static const regex kPronounObject(R"(^\s*(?:\w+\s+)?(?:it|him|her|them)\b)");
+    // (Also "..., the front of v2 struck its left side".)
+    static const regex kPronounObject(
+        R"(^\s*(?:\w+\s+)?(?:it|him|her|them)\b|^\s*(?:its|their)\s+(?:left|right|front|rear|back|side|driver|passenger)\b)");
     const bool pronoun_object = vm.empty() ? false : Has(vm.suffix().str(), kPronounObject);
     if (!object && subject && pronoun_object) {
       for (const Ref& ref : refs) {
@@ -262,6 +264,9 @@ void ReadContact(Reading& rd) {
     smatch am;
     if (std::regex_search(s, am, kWithIts)) note(striker, am[1].str());
     if (std::regex_search(s, am, kStruckIn)) note(struck, am[1].str());
+    // "the front of v2 struck its left side".
+    static const regex kStruckIts(R"(\b(?:contacted|struck|impacted|hit|sideswiped|striking|hitting)\s+(?:its|their)\s+)" + kArea);
+    if (!passive && std::regex_search(s, am, kStruckIts)) note(struck, am[1].str());
     if (std::regex_search(s, am, kItsArea)) note(passive ? struck : striker, am[1].str());
     static const regex kFrontToFront(R"(\bfront[- ]to[- ]front\b)");
     static const regex kFrontToRear(R"(\bfront[- ]to[- ](?:rear|back)\b)");
@@ -383,7 +388,7 @@ void ClassifyCrash(Reading& rd) {
     // A turner from a side road, driveway or parking lot enters the other's
     // path (turn into path); one turning off the road crosses it (turn across path).
     static const regex kFromSide(
-        R"(\b(?:from|out of|exiting|leaving|pulling out|pulled out|entered the (?:road|roadway|street|highway) from)\b[^.]{0,40}?\b(?:side (?:road|street)|driveway|parking|lot|private|alley|station|stop sign|minor road|intersecting))");
+        R"(\b(?:from|out of|exiting|leaving|pulling out|pulled out|entered the (?:road|roadway|street|highway) from)\b[^.]{0,40}?\b(?:side (?:road|street)|driveway|parking|lot|private|alley|station|stop sign|minor road|intersecting|garage|field|farm|parking (?:deck|structure)))");
     // "turned left onto oak ave" enters a road; when the other vehicle came
     // the opposite way on the road the turner left, the turn crosses its path.
     static const regex kOnto(R"(\bonto\b)");
@@ -654,7 +659,12 @@ void LocateCrash(Reading& rd) {
     // holds a crash in its queue.
     // (A median crossover is coded as an intersection.)
     static const regex kAtIntersectionStrong(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction|crossover)\b|\bintersection of\b)");
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction|crossover)\b|\bintersection of\b|)"
+        // The ramp's terminal is a junction ("at the terminal of the exit
+        // ramp, where the ramp forms a t-intersection with highway 20").
+        // (Not a queue's aim: "stopped at the end of the queue, intending to
+        // go straight across at the ramp terminal".)
+        R"(\b(?:occurred|happened|took place|collided|crashed)\s+(?:[^.;]{0,40}?\s)?at\s+the\s+(?:(?:[\w-]+\s+){0,2}?ramp\s+terminal|(?:terminal|terminus)\s+of\s+(?:the|an?)\s+(?:[\w-]+\s+){0,3}?ramp)\b|\bramp\s+(?:forms|creates|makes)\s+(?:a|an)\s+(?:[\w-]+\s+)?(?:intersection|junction)\b)");
     static const regex kAtIntersection(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)" + WhereRoadsMeet());
     // A vehicle leaving a driveway or lot puts the crash at its access, even

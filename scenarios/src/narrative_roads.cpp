@@ -369,6 +369,7 @@ struct RoadContext {
   // name no road in particular) and by name ("on route 9").
   string v1_road, v1_named_road;
   bool distinctive = false;  // v1_road names a kind of road
+  bool v1_on_ramp = false;   // V1 was on a ramp ("exiting the ramp", "in the ramp's left-turn lane")
 };
 
 std::vector<string> SceneTexts(const std::vector<Sentence>& sentences) {
@@ -392,6 +393,18 @@ RoadContext::RoadContext(const Reading& rd) : sentences(rd.sentences), names(Sce
     const string& said = Has(seg.text, kCoordinatedEnd) ? sentences[seg.sentence].text : seg.text;
     if (v1_named_road.empty()) v1_named_road = names.TravelledOn(said);
     if (!v1_road.empty() && !v1_named_road.empty()) break;
+  }
+  // V1 on a ramp the report counts the lanes of ("entering the freeway
+  // from the ramp").
+  // (Also "in the left-turn lane of the ramp".)
+  static const regex kOnRamp(
+      R"(\b(?:on|from|along|down|up|entering|exiting|via|lanes?\s+of)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b|)"
+      // ("stopped in the ramp's left-turn lane".)
+      R"(\b(?:in|on)\s+the\s+ramp'?s\s+(?:[\w-]+\s+){0,2}?lane\b)");
+  for (const Segment& seg : rd.segments) {
+    if (seg.vehicle == 1 && !seg.perceived && sentences[seg.sentence].kind != Kind::kCoding && Has(seg.text, kOnRamp)) {
+      v1_on_ramp = true;
+    }
   }
   // V1 stopped at a stop sign on a road the report does not name for it:
   // the one road the report says a stop sign controls ("the residential
@@ -612,7 +625,7 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       // ... or the sentence is about the ramp: "the ramp was a 1-way roadway
       // that widened from 1 lane to 2 lanes near its end".
       static const regex kRampSubject(
-          R"(^(?:the|this|that)\s+(?:[\w/-]+\s+){0,3}?ramp\s+(?:was|is|had|has|widened|widens|carried|carries)\b[^;]*$)");
+          R"(^(?:(?:at|near|approaching|toward|towards)\s+(?:the|its)\s+(?:[\w-]+\s+){0,2}?)?(?:the|this|that)\s+(?:[\w/-]+\s+){0,3}?ramp\s+(?:was|is|had|has|widened|widens|carried|carries)\b[^;]*$)");
       rs.ramp = Has(s.text.substr(pos + static_cast<size_t>(m.length(0)), 40), kRampAfter) ||
                 Has(s.text.substr(0, pos), kRampSubject);
       // The phrase runs on to the next road named ("1 lane in each direction
@@ -852,19 +865,8 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
       if (seg.vehicle > 1 && !seg.perceived && Has(seg.text, kOnOneWay)) v1_way = -1;
     }
   }
-  // V1 on a ramp the report counts the lanes of ("entering the freeway
-  // from the ramp").
-  // (Also "in the left-turn lane of the ramp".)
-  static const regex kOnRamp(
-      R"(\b(?:on|from|along|down|up|entering|exiting|via|lanes?\s+of)\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?ramp\b)");
-  bool v1_on_ramp = false;
-  for (const Segment& seg : segments) {
-    if (seg.vehicle == 1 && !seg.perceived && sentences[seg.sentence].kind != Kind::kCoding && Has(seg.text, kOnRamp)) {
-      v1_on_ramp = true;
-    }
-  }
   const RoadStatement*& best = choice.best;
-  if (v1_on_ramp) best = pick([](const RoadStatement& rs) { return rs.ramp && rs.owner <= 1; });
+  if (ctx.v1_on_ramp) best = pick([](const RoadStatement& rs) { return rs.ramp && rs.owner <= 1; });
   if (!best && v1_way != 0) best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.one_way == (v1_way > 0); });
   if (!best && v1_way > 0) {
     // On a one-way road whose lanes the report does not count: one lane.
@@ -874,7 +876,10 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   }
   if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
   if (!best && v1_way <= 0 && !ctx.v1_named_road.empty()) {
-    best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && rs.name == ctx.v1_named_road; });
+    // (Not one counted across V1's course: that sentence named two roads.)
+    best = pick([&](const RoadStatement& rs) {
+      return rs.owner <= 1 && rs.name == ctx.v1_named_road && !(rs.axis && ctx.v1_axis >= 0 && *rs.axis != ctx.v1_axis);
+    });
   }
   if (!best && v1_way <= 0 && ctx.distinctive) {
     best = pick([&](const RoadStatement& rs) { return rs.owner <= 1 && SameRoad(rs.road, ctx.v1_road); });
@@ -918,7 +923,7 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   // ACCSIM_DEBUG_ROADS=1 lists every lane statement on stderr and marks
   // the one taken for V1's road.
   if (std::getenv("ACCSIM_DEBUG_ROADS")) {
-    for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d road '%s' counted '%s']%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, rs.road.c_str(), rs.counted.c_str(), &rs == best ? " <- best" : "");
+    for (const auto& rs : roads) std::fprintf(stderr, "[road s%zu owner%d axis%d total%d per%d dir%d ow%d cross%d ramp%d road '%s' counted '%s' name '%s']%s\n", rs.sentence, rs.owner, rs.axis ? *rs.axis : -1, rs.total, rs.per_direction, rs.directional, rs.one_way, rs.cross, rs.ramp, rs.road.c_str(), rs.counted.c_str(), rs.name.c_str(), &rs == best ? " <- best" : "");
     std::fprintf(stderr, "[v1 turns onto: %s]\n", v1_onto.c_str());
   }
   return choice;
@@ -1252,7 +1257,7 @@ void DrivewayLanes(Reading& rd, const RoadStatement* best) {
     // ... one lane when the report says the drive is one-way or one lane
     // ("a one-way, exit-only driveway", "a narrow, 1-lane paved alley").
     static const regex kOneLaneDrive(
-        R"(\b(?:oneway|1-lane|(?:exit|entrance)[- ]only)\b[^.;]{0,30}?\b(?:driveway|drive|alley)\b|\b(?:driveway|alley)\b[^.;]{0,20}?\b(?:is|was) (?:a )?(?:oneway|1-lane)\b)");
+        R"(\b(?:oneway|1-lane|single[- ]lane|(?:exit|entrance)[- ]only)\b[^.;]{0,30}?\b(?:driveway|drive|alley|access)\b|\b(?:driveway|alley|access)\b[^.;]{0,20}?\b(?:is|was) (?:a )?(?:[\w-]+ )?(?:oneway|1-lane|single[- ]lane)\b)");
     const bool one_lane = Has(scene, kOneLaneDrive);
     r.road.one_way.Set(one_lane, Provenance::kInferred);
     r.road.divided.Set(false, Provenance::kInferred);
@@ -1532,6 +1537,24 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     }
   }
   const Limit* pick = first_limit([](const Limit& l) { return l.owner == 1; });
+  // V1 on the ramp: the limit said of the ramp ("the ramp is posted at 56
+  // kmh (35 mph)"), not the road it leads to.
+  if (!pick && ctx.v1_on_ramp) {
+    static const regex kRampLimit(
+        R"(\bramp'?s?\s+(?:(?!which\b|that\b|where\b|and\b)[\w ,-]){0,40}?\b(?:is|was|has|had)\s+(?:a\s+)?(?:posted\s+)?(?:speed\s+)?(?:limit\s+(?:of\s+)?)?(?:posted\s+)?(?:at\s+)?(\d{2,3})\s*(kmh|mph)\b|)"
+        R"(\bposted\s+(?:at\s+)?(\d{2,3})\s*(kmh|mph)\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?on\s+the\s+(?:[\w-]+\s+)?ramp\b)");
+    for (const Sentence& s : sentences) {
+      if (s.kind != Kind::kNarrative) continue;
+      smatch m;
+      if (!std::regex_search(s.text, m, kRampLimit)) continue;
+      const int g = m[1].matched ? 1 : 3;
+      const double value = std::stod(m[g].str());
+      const bool kmh = m[g + 1].str() == "kmh";
+      const double mps = value * (kmh ? kKmhToMps : kMphToMps);
+      pick = first_limit([&](const Limit& l) { return std::abs(l.mps - mps) < 1e-9; });
+      if (pick) break;
+    }
+  }
   if (!pick && !ctx.v1_named_road.empty()) {
     pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.name == ctx.v1_named_road; });
   }
@@ -1593,7 +1616,7 @@ const string& WhereRoadsMeet() {
 // "exiting a parking lot driveway", "at the parking lot exit".
 bool LeavesDriveway(const string& t) {
   static const regex kFromDriveway(
-      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley|plaza|shopping center|mall|gas station|service station)\b|\bparking lot (?:exit|driveway)\b|)"
+      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley|plaza|shopping center|mall|gas station|service station|garage|parking deck|parking structure|field|pasture|farm lane|field access|field entrance)\b|\b(?:parking lot|garage) (?:exit|driveway)\b|)"
       // "stopped at the mouth of the driveway", "drove south through the exit driveway".
       R"(\b(?:stopped|waiting|sitting|sat|paused|idling|was|were|emerged|emerging)\s+(?:[\w-]+\s+){0,2}?(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
       R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b|)"
@@ -1606,7 +1629,7 @@ bool LeavesDriveway(const string& t) {
 
 const regex& DrivewayWord() {
   static const regex kDriveway(
-      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road|lane)\b|\b(?:farm|field|ranch|pasture) (?:lane|entrance|access|drive|gate)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot|plaza|mall|center|centre|market|supermarket|school|church|bank|dealership|complex|office) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
+      R"(\bdriveway\b|\bparking lot\b|\bprivate (?:drive|road|lane)\b|\b(?:farm|field|ranch|pasture) (?:lane|entrance|access|drive|gate)\b|\balley\b|\b(?:business|store|restaurant|station|shopping|lot|plaza|mall|center|centre|market|supermarket|school|church|bank|dealership|complex|office) (?:entrance|exit|driveway)|\bout of (?:a|the) lot\b|\bservice station\b|\bgas(?:oline)? station\b|\b(?:filling|fuel) station\b|\bpetrol station\b|\bcar park\b|\bparking (?:garage|deck|structure)\b|\bgarage (?:exit|entrance|driveway)\b|\bentrances? (?:of|to|into) (?:a|an|the) (?:[a-z-]+ ){0,2}?(?:station|store|shop|restaurant|business|lot|plaza|mall|center|centre|yard|complex|dealership|bank|school|church|office|farm|market|supermarket)\b)");
   return kDriveway;
 }
 

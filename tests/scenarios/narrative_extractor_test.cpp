@@ -3920,5 +3920,77 @@ TEST(NarrativeExtractorTest, NeitherStreetPostedIsNoLimit) {
       "stop sign. Vehicle #2 was southbound. The front of Vehicle #2 struck the right side of Vehicle #1.");
   EXPECT_FALSE(r.road.speed_limit_mps.known());
 }
+TEST(NarrativeExtractorTest, ThePronounObjectOfAContact) {
+  // "As V1 crossed ..., the front of V2 struck its left side": V1's side.
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle 1 was westbound on the side road and stopped at the stop sign. Vehicle 2 was northbound on the "
+      "highway. After stopping, the driver of Vehicle 1 pulled out. As Vehicle 1 crossed the northbound lanes, "
+      "the front of Vehicle 2 struck its left side.");
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
+}
+TEST(NarrativeExtractorTest, AtTheRampTerminalOnTheRampsOwnLanesAndLimit) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred at the terminal of the westbound exit ramp from an interstate, where the ramp forms a "
+      "T-intersection with Highway 20, a north/south four-lane undivided roadway (two lanes each direction) "
+      "posted at 72 km/h (45 mph). At the terminal the ramp widens to two lanes, a left-turn lane and a "
+      "right-turn lane, both controlled by a stop sign; the ramp is posted at 56 km/h (35 mph). Vehicle 1 had "
+      "exited the interstate and stopped in the ramp's left-turn lane, intending to turn left. Vehicle 2 was "
+      "northbound on Highway 20. After stopping, the driver of Vehicle 1 pulled out. As Vehicle 1 crossed the "
+      "northbound lanes, the front of Vehicle 2 struck its left side.");
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 56 / 3.6, 1e-6);
+  // A ramp whose limit comes after what it does: "the ramp curves gently to
+  // the left, is posted at 72 km/h".
+  const AccidentRecord merge = kExtractor.Extract(
+      "The crash occurred where a single-lane entrance ramp joins the northbound roadway of an interstate. The "
+      "interstate is posted at 105 km/h (65 mph). The ramp curves gently to the left, is posted at 72 km/h (45 "
+      "mph), and has a merge warning sign. V1 was traveling up the ramp to merge into the northbound lanes. V2 "
+      "was northbound in lane one. The left side of V1 contacted the right side of V2.");
+  EXPECT_NEAR(merge.road.speed_limit_mps.value, 72 / 3.6, 1e-6);
+  // ... but a queue's aim at the terminal places no crash there.
+  const AccidentRecord queue = kExtractor.Extract(
+      "This rear-end crash occurred on a one-lane exit ramp leaving the eastbound lanes of an interstate; it "
+      "ends at a signal about 250 meters from the gore. V2 was stopped at the end of the queue, intending to go "
+      "straight across at the ramp terminal. V1 exited the interstate behind it. The front of V1 struck the "
+      "back of V2.");
+  EXPECT_EQ(queue.crash.location.value, CrashLocation::kRamp);
+}
+TEST(NarrativeExtractorTest, OutOfAGarageAndPastADoubleParkedTruck) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred at the exit of a public parking garage on a one-way northbound downtown street with "
+      "three northbound travel lanes. A delivery truck was double-parked in the curb lane just south of the exit. "
+      "V1 came out of the garage and stopped at the sidewalk, then turned right to go north. V2 was northbound "
+      "in lane two. The front of V2 struck the left side of V1. The driver of V1 said the double-parked truck "
+      "blocked his view.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_FALSE(r.vehicles[0].parked.value);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnRight);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kDriveway);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
+}
+TEST(NarrativeExtractorTest, LeavingAFieldByItsSingleLaneAccess) {
+  const AccidentRecord r = kExtractor.Extract(
+      "This crash occurred at a farm field access on the west side of a two-lane county highway. The field "
+      "access is a single-lane dirt drive with no control. V1 was leaving the field. The driver stopped at the "
+      "edge of the highway and then began a left turn to go north. V2 was southbound. The front of V2 struck "
+      "the left front of V1.");
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kDriveway);
+  EXPECT_EQ(r.road.lanes_total.value, 1);
+}
+TEST(NarrativeExtractorTest, TheNamedRoadIsNotTheOneAcrossItsCourse) {
+  // "plaza road" is named in the first sentence with the arterial's count.
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred at a T-intersection formed by the exit road of a shopping plaza (the south leg) and "
+      "a five-lane east/west arterial. The arterial has two through lanes in each direction and a center "
+      "two-way left-turn lane. The plaza road is a two-lane public street posted at 40 km/h (25 mph), "
+      "controlled by a stop sign. Vehicle one was northbound on the plaza road and stopped at the stop sign, "
+      "waiting to turn left. Vehicle two was eastbound. The front of Vehicle two struck the left side of "
+      "Vehicle one.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+}
 }  // namespace
 }  // namespace accsim
