@@ -47,7 +47,7 @@ void ReadDescriptions(Reading& rd) {
   std::map<int, string>& descriptions = rd.descriptions;
   std::map<int, string>& bodies = rd.bodies;
   static const regex kDesc(
-      R"(^v([1-9])\s*(?:,\s*|\s+-{1,2}\s+|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|hauling|carrying|loaded|laden|returning|owned|registered|belonging|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
+      R"(^v([1-9])\s*(?:,\s*|\s+-{1,2}\s+|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|hauling|carrying|operating|serving|used|loaded|laden|returning|owned|registered|belonging|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
   static const regex kBody(R"(^\s*,\s*([a-z0-9][a-z0-9 -]{1,40}?)\s+(?:was|that|which|were)\b)");
   for (const Sentence& s : sentences) {
     for (const Ref& ref : RefsIn(s.text)) {
@@ -107,8 +107,16 @@ void ReadDescriptions(Reading& rd) {
         string model;
         for (size_t k = 1; k < words.size(); ++k) model += (model.empty() ? "" : " ") + words[k];
         owners[model].insert(v);
-        // Every word after the make: "the sonoma" for "a gmc sonoma pickup".
-        for (size_t k = 1; k < words.size(); ++k) owners[words[k]].insert(v);
+        // Every word after the make: "the sonoma" for "a gmc sonoma pickup",
+        // and every run of them: "the crown victoria" for "a ford crown
+        // victoria police interceptor".
+        for (size_t k = 1; k < words.size(); ++k) {
+          string run;
+          for (size_t e = k; e < words.size(); ++e) {
+            run += (run.empty() ? "" : " ") + words[e];
+            owners[run].insert(v);
+          }
+        }
       }
       static const std::array<const char*, 7> kClassWord = {"car", "suv", "pickup", "van", "truck", "bus", "motorcycle"};
       owners[kClassWord[static_cast<size_t>(ClassOf(d + " " + (bodies.count(v) ? bodies[v] : "")))]].insert(v);
@@ -331,7 +339,7 @@ void SplitSegments(Reading& rd) {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b|)"
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|minivans?|sedans?|coupes?|wagons?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b|)"
       // (Not its own passengers: "driven by a 38 year-old female with one
       // passenger was traveling southbound".)
       R"(\b(?:two|three|several|\d+)\s+(?:\w+\s+)?(?:witness(?:es)?|pedestrians|bystanders|officers|troopers|deputies|flaggers|cyclists|bicyclists)\b)");
@@ -444,9 +452,14 @@ void SplitSegments(Reading& rd) {
         // crossing, and then started across".
         static const regex kPerson(R"(\b(?:pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist|witness)\b)");
         static const regex kListResumes(R"(,\s*(?:and\s+)?then\s+\w+|,\s*and\s+(?:then\s+)?(?:\w+ed|began|started)\b)");
+        // ... or after a car it waited for or yielded to: "stopped, waited
+        // for an eastbound car approaching from his left to pass, looked left
+        // again, and pulled out to turn left".
+        static const regex kWaitedFor(R"(\b(?:waited|waiting|wait)\s+for\s*$|\b(?:yielded|yielding|yield)\s+to\s*$)");
+        const bool waited_for = Has(t, kWaitedFor);
         if (std::regex_search(rest, rm, kDriverResumes)) {
           t += " " + rest.substr(static_cast<size_t>(rm.position()));
-        } else if (Has(it->str(), kPerson) && std::regex_search(rest, rm, kListResumes)) {
+        } else if ((Has(it->str(), kPerson) || waited_for) && std::regex_search(rest, rm, kListResumes)) {
           t += " " + rest.substr(static_cast<size_t>(rm.position()));
         }
         break;

@@ -102,7 +102,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // parked thing is what the vehicle struck, not the vehicle itself; nor is
   // one it saw ("could see past the parked truck").
   static const regex kParkedObject(
-      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+[\s-])?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b|\bparked\s+(?:cars|trucks|vans|vehicles)\b|)"
+      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)(?:\s*,?\s*(?:and\s+)?(?:parked|unoccupied))?\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+[\s-])?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b|\bparked\s+(?:cars|trucks|vans|vehicles)\b|)"
       // "a landscaping trailer parked at the south curb limited the v2 driver's view".
       R"(\b(?:a|an|another|the)\s+(?:[\w-]+\s+){0,2}?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|trailers?|sedans?)\s+(?:was\s+)?(?:double-)?parked\b)");
   const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);

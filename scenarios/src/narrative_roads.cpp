@@ -482,7 +482,9 @@ void ReadRoadKind(Reading& rd) {
   }
   scene = WithoutDistantJunctions(scene);
   static const regex kTJunction(
-      R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\btee[sd]?\s+into\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection)");
+      R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\btee[sd]?\s+into\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection|)"
+      // "a county road that ends at a t with a state route".
+      R"(\b(?:at|forms?|forming|makes?|making)\s+(?:a|the)\s+t\b(?![-'])|\bstem of the t\b)");
   static const regex kIntersection(
       R"(\bintersection\b|(?:^|[^a-z-])junction\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|)" +
       WhereRoadsMeet());
@@ -874,7 +876,11 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
     r.road.lanes_total.Set(1, Provenance::kInferred);
     r.road.lanes_per_direction.Set(1, Provenance::kInferred);
   }
-  if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner == 1; });
+  // (Not V1's count of the road it turned onto: "the kia was making a right
+  // turn from a side street onto a four-lane arterial".)
+  if (!best && v1_way <= 0) {
+    best = pick([&](const RoadStatement& rs) { return rs.owner == 1 && !counts_road_turned_onto(rs); });
+  }
   if (!best && v1_way <= 0 && !ctx.v1_named_road.empty()) {
     // (Not one counted across V1's course: that sentence named two roads.)
     best = pick([&](const RoadStatement& rs) {

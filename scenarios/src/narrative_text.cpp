@@ -209,6 +209,11 @@ string Normalise(std::string_view in) {
   static const regex kMakeThenModel(
       R"(\bthe\s+([a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s*\(\s*v([1-9])\s*\)\s*,\s*an?\s+((?:19|20)\d\d)\s+)");
   s = std::regex_replace(s, kMakeThenModel, "v$2, a $3 $1 ");
+  // "struck a legally parked, unoccupied 1994 oldsmobile cutlass ciera
+  // (v2)": the vehicle with its description, "v2, a ... ciera,".
+  static const regex kDescribedThenNumbered(
+      R"(\b(?:a|an)\s+((?:[a-z-]+,?\s+){0,3}?(?:parked|unoccupied),?\s+(?:[a-z-]+,?\s+){0,2}?(?:19|20)\d\d\s+[a-z][^,;().]{1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
+  s = std::regex_replace(s, kDescribedThenNumbered, "v$2, a $1,");
   static const regex kNamed(
       R"(\bthe\s+((?:(?:19|20)\d\d\s+)?[a-z](?:(?!\.\s|\bthe\s)[a-z0-9/&'. -]){1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
   std::map<string, std::set<string>> numbered_names;  // "chevrolet" -> {"1"}
@@ -220,6 +225,18 @@ string Normalise(std::string_view in) {
     numbered_names[name].insert(m[2].str());
     return "v" + m[2].str() + (m[3].matched ? m[3].str() : string());
   });
+  // A make or model numbered once ("the xterra (v1) was southbound") names
+  // that vehicle wherever else it recurs ("struck the left side of the
+  // xterra"); a class word ("the pickup (v2)") may be another's too.
+  {
+    static const regex kGeneric(
+        R"(^(?:(?:\w+\s+)?(?:vehicle|car|truck|pickup|van|minivan|suv|sedan|coupe|wagon|bus|motorcycle|semi|tractor|trailer|taxi|cab|jeep|unit|driver)s?|other|first|second|third|striking|struck)$)");
+    for (const auto& [name, numbers] : numbered_names) {
+      if (numbers.size() != 1 || name.size() < 4 || Has(name, kGeneric)) continue;
+      const regex again(R"(\bthe\s+)" + EscapeRegex(name) + R"(\b(?!\s*\())");
+      s = std::regex_replace(s, again, "v" + *numbers.begin());
+    }
+  }
   // A vehicle introduced by make and numbered only later ("a 2005 chevrolet
   // malibu was northbound ... the driver of the chevrolet (vehicle 1)"):
   // the introduction is that vehicle's description.
@@ -383,7 +400,7 @@ Kind KindOf(const string& s) {
   // south", "v2, a cr-v with one occupant, was stopped"): such phrases do not
   // make the sentence one about people.
   static const regex kPeoplePhrase(
-      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|)"
+      R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy|\d+[- ]year[- ]olds|adults|people|persons|students)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|)"
       // ... nor the driver's age as the subject of the vehicle's movement
       // ("its 58-year-old driver stopped at the stop sign and began a right turn",
       // "v2's 66-year-old driver had his left signal on and was slowing").

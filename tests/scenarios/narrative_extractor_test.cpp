@@ -3992,5 +3992,57 @@ TEST(NarrativeExtractorTest, TheNamedRoadIsNotTheOneAcrossItsCourse) {
       "Vehicle one.");
   EXPECT_EQ(r.road.lanes_total.value, 2);
 }
+TEST(NarrativeExtractorTest, TheTurnersOwnSentenceNamesTheMinivanAndTheRoadItTurnedOnto) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The Kia was making a right turn from a stop-controlled side street onto a four-lane arterial when it was "
+      "struck from behind by an eastbound minivan. Roadway: the arterial runs east/west, has two travel lanes in "
+      "each direction and a posted limit of 45 mph. The side street is a two-lane, two-way residential street "
+      "posted at 25 mph that forms a T with the arterial from the south. Vehicle #1, a 2004 Kia Spectra, "
+      "stopped at the stop sign facing north and then began a right turn to head east. Vehicle #2, a 1999 Ford "
+      "Windstar, was eastbound in the curb lane. The front of the Windstar struck the left rear of the Spectra.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].travel.value, std::optional<Compass>(Compass::kNorth));
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 25 * 0.44704, 1e-6);
+}
+TEST(NarrativeExtractorTest, ACarOccupiedByTeenagersStillTellsItsRoad) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 2001 Pontiac Grand Am coupe occupied by three 19-year-olds, was westbound on a two-lane county "
+      "road posted at 45 MPH. The road bends to the left at the crash site. The front of the car struck an oak "
+      "tree about 6 m off the road.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 45 * 0.44704, 1e-6);
+}
+TEST(NarrativeExtractorTest, AModelNumberedOnceNamesItsVehicleLater) {
+  const AccidentRecord r = kExtractor.Extract(
+      "At 9 pm a 2004 Nissan Xterra turning right on red was struck by a taxi. The Xterra (V1) was southbound. "
+      "V2, a 2000 Ford Crown Victoria operating as a taxi, was westbound. The front of the Crown Victoria struck "
+      "the left side of the Xterra as it entered the westbound curb lane.");
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_NE(r.crash.type.value, CrashType::kSingleVehicle);
+}
+TEST(NarrativeExtractorTest, ARoadEndingAtATAndACarWaitedFor) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle No. 1 was northbound on a county road that ends at a T with an east/west state route. The "
+      "county road is two lanes with a stop sign at the T. The driver of Vehicle No. 1 stopped, waited for an eastbound car "
+      "approaching from his left to pass, looked left again, and pulled out to turn left (west). Vehicle No. 2 "
+      "was westbound from his right. The front of Vehicle No. 2 struck the right side of Vehicle No. 1 in the "
+      "westbound lane.");
+  EXPECT_EQ(r.road.kind.value, RoadKind::kTJunction);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);
+}
+TEST(NarrativeExtractorTest, AParkedCarNumberedAfterItsDescription) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was northbound on a two-lane city street with parking along both curbs. V1 drifted to the right into "
+      "the parking lane and its front struck the left rear of a legally parked, unoccupied 1994 Oldsmobile "
+      "Cutlass Ciera (V2).");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_FALSE(r.vehicles[0].parked.value);
+  EXPECT_TRUE(r.vehicles[1].parked.value);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+}
 }  // namespace
 }  // namespace accsim
