@@ -444,13 +444,15 @@ void SplitSegments(Reading& rd) {
         // truck blocked his view, and that he "inched out"".
         static const regex kDriverResumes(
             R"((?:,\s*(?:and|so|but|then)|\b(?:and|then))\s+(?:that\s+)?(?:then\s+)?"?\s*(?:he|she)\s+"?\s*(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b)");
-        smatch rm;
-        const string rest = t.substr(at);
-        t = t.substr(0, cut_at);
         // So is the next verb of its list after a person it waited for:
         // "stopped at the stop sign, waited for a pedestrian to finish
         // crossing, and then started across".
+        // (Read the match before `t` changes: `it` points into it.)
         static const regex kPerson(R"(\b(?:pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist|witness)\b)");
+        const bool person = Has(it->str(), kPerson);
+        smatch rm;
+        const string rest = t.substr(at);
+        t = t.substr(0, cut_at);
         static const regex kListResumes(R"(,\s*(?:and\s+)?then\s+\w+|,\s*and\s+(?:then\s+)?(?:\w+ed|began|started)\b)");
         // ... or after a car it waited for or yielded to: "stopped, waited
         // for an eastbound car approaching from his left to pass, looked left
@@ -459,7 +461,7 @@ void SplitSegments(Reading& rd) {
         const bool waited_for = Has(t, kWaitedFor);
         if (std::regex_search(rest, rm, kDriverResumes)) {
           t += " " + rest.substr(static_cast<size_t>(rm.position()));
-        } else if ((Has(it->str(), kPerson) || waited_for) && std::regex_search(rest, rm, kListResumes)) {
+        } else if ((person || waited_for) && std::regex_search(rest, rm, kListResumes)) {
           t += " " + rest.substr(static_cast<size_t>(rm.position()));
         }
         break;
