@@ -210,10 +210,16 @@ string Normalise(std::string_view in) {
       R"(\bthe\s+([a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s*\(\s*v([1-9])\s*\)\s*,\s*an?\s+((?:19|20)\d\d)\s+)");
   s = std::regex_replace(s, kMakeThenModel, "v$2, a $3 $1 ");
   // "struck a legally parked, unoccupied 1994 oldsmobile cutlass ciera
-  // (v2)": the vehicle with its description, "v2, a ... ciera,".
+  // (v2)": the vehicle with its description and then how it stood, "v2, a
+  // 1994 ... ciera, which was legally parked unoccupied,".
   static const regex kDescribedThenNumbered(
-      R"(\b(?:a|an)\s+((?:[a-z-]+,?\s+){0,3}?(?:parked|unoccupied),?\s+(?:[a-z-]+,?\s+){0,2}?(?:19|20)\d\d\s+[a-z][^,;().]{1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
-  s = std::regex_replace(s, kDescribedThenNumbered, "v$2, a $1,");
+      R"(\b(?:a|an)\s+((?:[a-z-]+,?\s+){0,3}?(?:parked|unoccupied),?\s+(?:[a-z-]+,?\s+){0,2}?)((?:19|20)\d\d\s+[a-z][^,;().]{1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
+  s = ReplaceWith(s, kDescribedThenNumbered, [](const smatch& m) {
+    string state = m[1].str();  // "legally parked, unoccupied": how it stood, after what it is
+    state.erase(std::remove(state.begin(), state.end(), ','), state.end());
+    while (!state.empty() && state.back() == ' ') state.pop_back();
+    return "v" + m[3].str() + ", a " + m[2].str() + ", which was " + state + ",";
+  });
   static const regex kNamed(
       R"(\bthe\s+((?:(?:19|20)\d\d\s+)?[a-z](?:(?!\.\s|\bthe\s)[a-z0-9/&'. -]){1,40}?)\s*\(\s*v([1-9])\s*\)(\s*,)?)");
   std::map<string, std::set<string>> numbered_names;  // "chevrolet" -> {"1"}

@@ -4042,6 +4042,7 @@ TEST(NarrativeExtractorTest, AParkedCarNumberedAfterItsDescription) {
   ASSERT_EQ(r.vehicles.size(), 2u);
   EXPECT_FALSE(r.vehicles[0].parked.value);
   EXPECT_TRUE(r.vehicles[1].parked.value);
+  EXPECT_EQ(r.vehicles[1].description.value, "1994 oldsmobile cutlass ciera");  // not "legally"
   EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
 }
 }  // namespace
