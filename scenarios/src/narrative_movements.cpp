@@ -373,6 +373,15 @@ void ReadVehicles(Reading& rd) {
   std::vector<MovementEvidence>& statement = rd.statement;
   std::vector<int> relation(r.vehicles.size() + 1, 0);  // +1 same direction as the other, -1 opposite
   std::vector<std::optional<Compass>> late_travel(r.vehicles.size() + 1);
+  // A turn told by the compass ("intending to turn west", "turned north
+  // onto elm"): left or right once the vehicle's own course is known.
+  struct CompassTurn {
+    size_t vehicle;
+    bool statement;  // evidence of the driver's account, not the narrative's
+    Compass to;
+    bool intended;
+  };
+  std::vector<CompassTurn> compass_turns;
   for (const Segment& seg : segments) {
     if (seg.vehicle < 1 || seg.vehicle > static_cast<int>(r.vehicles.size())) continue;
     const size_t vi = static_cast<size_t>(seg.vehicle);
@@ -436,11 +445,24 @@ void ReadVehicles(Reading& rd) {
       }
     }
     static const regex kParkedOnly(R"(\bparked\b)");
+    static const regex kTurnTo(
+        R"(\bturn(?:ed|ing|s)?\s+(?:(?:on)?to\s+(?:the\s+)?)?(north|south|east|west)(?:bound|ward)?\b)");
+    static const regex kMeantBefore(
+        R"(\b(?:intend\w*|intention|plann\w*|prepar\w*|wait\w*|await\w*|signal\w*|going to|about to|wanted to|wanting to|would|in order to)\b[^,.]{0,20}$)");
+    auto note_compass_turns = [&](bool statement_evidence) {
+      for (auto it = std::sregex_iterator(seg.text.begin(), seg.text.end(), kTurnTo); it != std::sregex_iterator(); ++it) {
+        const auto to = CompassWord((*it)[1].str());
+        const bool meant = Has(Before(seg.text, static_cast<size_t>(it->position()), 40), kMeantBefore);
+        if (to) compass_turns.push_back({vi, statement_evidence, *to, meant});
+      }
+    };
     if (kind == Kind::kNarrative && pre_impact && !seg.perceived) {
       ReadMovement(seg.text, narrative[vi]);
+      note_compass_turns(false);
     } else if (kind == Kind::kStatement || seg.perceived || (kind == Kind::kPeople && Has(seg.text, kParkedOnly)) ||
                (kind == Kind::kNarrative && (told_of_before || state_in_relative))) {
       ReadMovement(seg.text, statement[vi]);
+      note_compass_turns(true);
     } else if (kind == Kind::kCoding) {
       MovementEvidence* other = nullptr;
       if (r.vehicles.size() == 2) other = &narrative[vi == 1 ? 2 : 1];
@@ -533,6 +555,16 @@ void ReadVehicles(Reading& rd) {
     if (!r.vehicles[i].travel.known() && late_travel[i + 1]) r.vehicles[i].travel.Set(*late_travel[i + 1], Provenance::kStated);
   }
   relative_directions();
+  for (const CompassTurn& ct : compass_turns) {
+    const auto& course = r.vehicles[ct.vehicle - 1].travel;
+    if (!course.known() || !course.value) continue;
+    const int from = static_cast<int>(*course.value), to = static_cast<int>(ct.to);
+    const bool left = to == (from + 1) % 4, right = to == (from + 3) % 4;  // Compass runs anticlockwise
+    if (!left && !right) continue;
+    MovementEvidence& e = ct.statement ? statement[ct.vehicle] : narrative[ct.vehicle];
+    if (ct.intended) (left ? e.intent_left : e.intent_right) = true;
+    else (left ? e.turn_left : e.turn_right) = true;
+  }
   // "v1 failed to slow for stopped traffic, striking v2, which was pushed
   // into v3": the vehicles it ran into were that traffic.
   {

@@ -155,6 +155,9 @@ string Normalise(std::string_view in) {
   // Police shorthand: "u2" (unit 2) and "d1" (driver 1), only as whole words.
   static const regex kShortRef(R"(\b[ud]([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kShortRef, "v$1");
+  // "the v1 driver told the investigator": the driver of v1.
+  static const regex kNumberedDriver(R"(\bthe\s+v([1-9])\s+(driver|operator)\b)");
+  s = std::regex_replace(s, kNumberedDriver, "the $2 of v$1");
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
   // Not a place in a queue: "the 3rd vehicle in a queue waiting for the light",
   // "the 4th car in the eastbound queue".

@@ -4045,5 +4045,37 @@ TEST(NarrativeExtractorTest, AParkedCarNumberedAfterItsDescription) {
   EXPECT_EQ(r.vehicles[1].description.value, "1994 oldsmobile cutlass ciera");  // not "legally"
   EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
 }
+TEST(NarrativeExtractorTest, ATurnToldByTheCompassIsLeftOrRightOfTheCourse) {
+  // Northbound and meaning to turn west: a left turn, begun.
+  const AccidentRecord a = kExtractor.Extract(
+      "V1, a 2008 Honda Civic, was northbound in the left-turn bay intending to turn west. V2, a 2006 Ford "
+      "Explorer, was southbound in the inside through lane. The V1 driver told the investigator that a bus in the "
+      "outside lane blocked her view. She began her turn and the front of V2 struck the right side of V1.");
+  ASSERT_EQ(a.vehicles.size(), 2u);
+  EXPECT_EQ(a.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(a.vehicles[1].movement.value, Movement::kStraight);
+  EXPECT_EQ(a.crash.type.value, CrashType::kTurnAcrossPath);
+  // Westbound and turning north: a right turn.
+  const AccidentRecord b = kExtractor.Extract(
+      "V1 was traveling west on Oak Street and turned north onto Elm Avenue. V2 was northbound on Elm Avenue in "
+      "the right lane. The front of V2 struck the rear of V1.");
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.vehicles[0].movement.value, Movement::kTurnRight);
+  // A direction that is the course itself is no turn.
+  const AccidentRecord c = kExtractor.Extract(
+      "V1 was traveling west on Oak Street and continued west through the intersection. V2 was northbound on Elm "
+      "Avenue and the front of V2 struck the left side of V1.");
+  ASSERT_EQ(c.vehicles.size(), 2u);
+  EXPECT_EQ(c.vehicles[0].movement.value, Movement::kStraight);
+}
+TEST(NarrativeExtractorTest, TheNumberedDriverIsThatVehiclesDriver) {
+  // "the v1 driver said ... she began her turn" is v1's account, not v2's.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was eastbound and stopped at the stop sign. V2 was northbound on the main road. The V1 driver said "
+      "she looked both ways and then she turned left. The front of V2 struck the left side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
