@@ -142,7 +142,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
     }
   }
   static const regex kEntered(
-      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|(?:inched|crept|nosed|edged) (?:out|forward|into|onto)|went for it|proceeded (?:into|onto|to)|drove (?:into|onto|out))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
+      R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|(?:inched|crept|nosed|edged) (?:out|forward|into|onto)|went for it|proceeded (?:into|onto|to)|drove (?:into|onto|out)|accelerated (?:into|onto|across) (?:the|a) (?:intersection|junction|road|roadway|street|highway))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
       R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b|)"
       // "she accelerated into the turn".
       R"(\b(?:accelerated|moved|went|eased|pulled|proceeded|started|began|drove)\s+(?:forward\s+|ahead\s+|out\s+)?into\s+(?:the|its|his|her|a)\s+(?:left\s+|right\s+)?turn\b(?![- ](?:lanes?|bays?|pocket|only)\b))");

@@ -73,7 +73,7 @@ std::optional<int> AxisIn(const string& s) {
   static const regex kAxis(
       R"(\b(east|west)[- ]?(?:/|-|and)?\s*(?:west|east)\b|\b(north|south)[- ]?(?:/|-|and)?\s*(?:south|north)\b|\b(north|south|east|west)[- ]?bound\b|\b(n|s)/(?:s|n)\b|\b(e|w)/(?:w|e)\b|)"
       // "entering from the east is a two-lane residential street".
-      R"(\b(?:enter\w*|com(?:es|ing)|join\w*|approach\w*|runs?|leads?|extends?|branch\w*)\s+(?:in\s+)?from\s+the\s+(north|south|east|west)\b)");
+      R"(\b(?:enter\w*|com(?:es|ing)|came|join\w*|approach\w*|r[ua]ns?|leads?|led|extends?|branch\w*)\s+(?:in\s+)?from\s+the\s+(north|south|east|west)\b)");
   std::optional<int> last;
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kAxis); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
@@ -595,6 +595,16 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       // (Not the met road's: "on the northbound approach of a street where
       // it ends at a T-intersection with a 4-lane arterial".)
       if (!rs.axis && !rs.met) rs.axis = AxisIn(around);
+      // ... or where the clause's verb brings it in: "a 2-lane street
+      // posted at 40 kmh (25 mph) enters from the south" (the text is in
+      // the past tense by now: "came in from the south").
+      if (!rs.axis && !rs.met) {
+        static const regex kEntersFrom(
+            R"(^(?:(?!\band\s+(?:a|an|the)\b)[^;]){0,70}?\b(?:enter\w*|(?:com(?:es|ing)|came)\s+in|join\w*|branch\w*|tee[sd]?\s+in)\s+from\s+the\s+(?:north|south|east|west)\b)");
+        smatch em;
+        const string rest = s.text.substr(pos + static_cast<size_t>(m.length(0)));
+        if (std::regex_search(rest, em, kEntersFrom)) rs.axis = AxisIn(em.str());
+      }
       if (!rs.met) rs.axis = ctx.InheritedAxis(i, rs.axis);
       smatch sm;
       if (!rs.axis && std::regex_search(s.text, sm, kSubjectRoad) && axis_of_road.count(sm.str().substr(sm.str().rfind("the ", 0) == 0 ? 4 : 0))) {
@@ -1396,6 +1406,10 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
         skip_until = pos + static_cast<size_t>(it->length(0)) + static_cast<size_t>(conv.length(0));
       }
       if (Has(before.substr(before.size() > 40 ? before.size() - 40 : 0), kAdvisory)) continue;
+      // A range is a speed, never a posted limit ("he was doing the speed
+      // limit, but the reconstruction put v1 at 60-65 kmh").
+      static const regex kRangeBefore(R"(\b\d{1,3}\s*(?:-|to)\s*$)");
+      if (Has(Before(s.text, pos, 10), kRangeBefore)) continue;
       // A limit word after the value qualifies it close by ("45 mph (72
       // kmh) posted speed limit"), not one a clause later ("her speed at
       // 72-80 kmh and said she thought the limit was 55 mph").

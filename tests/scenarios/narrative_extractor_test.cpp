@@ -4077,5 +4077,31 @@ TEST(NarrativeExtractorTest, TheNumberedDriverIsThatVehiclesDriver) {
   EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
   EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, ASideStreetThatComesInFromTheSouthIsNotV1sRoad) {
+  // V1 is eastbound on the four-lane street; the two-lane street that
+  // "enters from the south" runs north-south; a speed range after "the
+  // speed limit" is V1's speed.
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred at a T-intersection. The east/west street has two lanes in each direction, no median, and "
+      "is posted at 30 mph (48 km/h). A two-lane street posted at 25 mph (40 km/h) enters from the south and has a "
+      "stop sign. V2 stopped at the stop sign on the south leg, then pulled out to turn left. V1 was eastbound in "
+      "the curb lane. The front of V1 struck the left side of V2. The V1 driver told police he was doing the speed "
+      "limit, but the reconstruction put V1 at 60-65 km/h (37-40 mph).");
+  EXPECT_EQ(r.road.lanes_total.value, 4);
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 30 * 0.44704, 1e-6);
+  // V1 on the side street that "comes in from the south", meaning to turn
+  // and then accelerating into the intersection: its road, and its turn.
+  const AccidentRecord s = kExtractor.Extract(
+      "The through road runs east/west and is a four-lane roadway with two lanes in each direction, posted at 72 "
+      "km/h (45 mph). A two-lane street posted at 48 km/h (30 mph) comes in from the south and ends at the "
+      "intersection. V1 was northbound on the side street and was stopped at the red light intending to turn left "
+      "(west). When the light turned green the driver accelerated into the intersection. V2 was eastbound in the "
+      "curb lane. The front of V2 struck the left side of V1.");
+  EXPECT_EQ(s.road.lanes_total.value, 2);
+  EXPECT_NEAR(s.road.speed_limit_mps.value * 3.6, 48.0, 1e-6);
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  EXPECT_EQ(s.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(s.crash.type.value, CrashType::kTurnIntoPath);
+}
 }  // namespace
 }  // namespace accsim
