@@ -110,6 +110,12 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   if (Has(t, kLeavingParking)) e.leaving_parking = true;
   if (Has(t, kRolledStop)) e.rolled_stop = true;
   if (Has(t, kNoStop)) e.no_stop = true;
+  static const regex kSlowedWord(
+      R"(\b(?:slowed|slowing|slows|decelerat\w+|reduced\s+(?:\w+\s+)?speed|rolled|rolling|coasted|coasting)\b)");
+  if (Has(t, kSlowedWord)) e.slowed_word = true;
+  static const regex kSkippedStop(
+      R"(\b(?:did not|didn't|failed to|never|without)\s+(?:\w+\s+){0,3}?stop(?:ping)?\s+(?:at|for)\s+(?:the|a|its|his|her)\s+(?:[\w-]+\s+){0,2}?(?:stop sign|sign|stop line|red|signal|light|end|edge|mouth|exit|apron)\b)");
+  if (Has(t, kSkippedStop)) e.skipped_stop = true;
   // A stop made on seeing the other vehicle is the avoidance, after the
   // critical event: "when he saw the other car coming, he stopped".
   static const regex kAvoidanceStop(R"(\b(?:saw|seeing|noticed|observed|spotted)\b[^.]{0,80}?\b(?:stopped|braked to a stop)\b)");
@@ -293,7 +299,12 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     d.pre_event = d.manoeuvre;
     const bool stopped = n.stopped || n.stop_cancelled || st.stopped || st.stop_cancelled;
     // "did not stop before making the turn": slowed for it.
-    const bool rolled = n.rolled_stop || st.rolled_stop || n.no_stop || st.no_stop;
+    // (One that did not stop where it should have, "did not stop at the end
+    // of the driveway and began a left turn", is slowing only when the text
+    // slows it: "slowed at the stop sign without coming to a complete stop".)
+    const bool skipped = n.skipped_stop || st.skipped_stop;
+    const bool rolled = n.rolled_stop || st.rolled_stop ||
+                        ((n.no_stop || st.no_stop) && (!skipped || n.slowed_word || st.slowed_word));
     // Moving off a red when it turned green is NASS "starting in traffic
     // lane", coded here as going on.
     if (stopped && n.green_start) d.pre_event = Movement::kStraight;

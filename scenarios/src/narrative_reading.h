@@ -109,6 +109,8 @@ struct MovementEvidence {
   bool other_says_decelerating = false;  // the follower's critical event: this one "traveling ... while decelerating"
   bool coded_adjacent = false;  // its critical event: another vehicle from an adjacent lane, same direction
   bool rolled_stop = false, no_stop = false;
+  bool slowed_word = false;   // any slowing told ("slowed", "reduced speed", "rolled")
+  bool skipped_stop = false;  // "did not stop at the stop sign / the end of the driveway"
   bool started = false;  // "began moving forward": a stopped vehicle moving off (NASS "starting in traffic lane")
   bool green_start = false;  // "when the signal turned green, v1 started its turn": moving off a red (NASS "starting")
   bool stopped_again = false;  // "moved forward ... then stopped again"

@@ -510,6 +510,31 @@ const regex& TwoWayWord() {
   return kTwoWay;
 }
 
+// The road nouns that carry an axis in LaneStatements and limits.
+const string& AxisRoadNoun() {
+  static const string kRoadNoun =
+      R"((?:county |state |rural |city |residential |through |collector |main |frontage )?(?:road|roadway|street|highway|avenue|boulevard|route|drive|lane))";
+  return kRoadNoun;
+}
+
+// Roads named with their axis ("a north/south rural highway and an
+// east/west county road") give it to later sentences about them ("the
+// county road is a 2-lane road", "the highway is posted at 45 mph").
+std::map<string, int> AxesOfNamedRoads(const std::vector<Sentence>& sentences) {
+  static const regex kNamedAxis(
+      R"(\b(north|south|east|west)(?:/|-|\s+and\s+)(?:north|south|east|west)\s+(?:[\w-]+\s+){0,2}?)" + AxisRoadNoun() + R"(\b)");
+  static const regex kTail(AxisRoadNoun() + "$");
+  std::map<string, int> axis_of_road;
+  for (const Sentence& s : sentences) {
+    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kNamedAxis); it != std::sregex_iterator(); ++it) {
+      const string w = (*it)[1].str(), named = it->str();
+      smatch nm;
+      if (std::regex_search(named, nm, kTail)) axis_of_road[nm.str()] = (w == "east" || w == "west") ? 0 : 1;
+    }
+  }
+  return axis_of_road;
+}
+
 // Every statement of a road's lane count ("a 4-lane divided highway", "2
 // lanes in each direction", "3 northbound lanes"), in the order told, with
 // what places it: the vehicle whose segment states it, the road's axis and
@@ -529,22 +554,8 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       R"(\b(\d)\s+(?:north|south|east|west)bound(?:\s+(?:(?:left|right)[- ]turn(?:[- ]only)?\s+|travel\s+|through\s+)?lanes?\b|(?=\s*(?:[,;.)]|and\b|$)))|\b(\d)\s+lanes?\s+(?:head|go|travel)s?\s+(?:north|south|east|west)|\b(\d)\s+(?:travel\s+|through\s+)?lanes?\s+(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound\b)");
   static const regex kTotal(
       R"(\b(\d)[- ](?:\d+(?:\.\d+)?[- ]?(?:meter|metre|m|foot|ft|feet)[- ](?:wide\s+)?)?(?:travel\s+|through\s+|traffic\s+)?lanes?\b(?!\s+(?:of\s+(?:traffic|travel)\s+)?(?:lines?|markings?|in each|in both|for each|per|each way|either way|each direction|either direction|both directions|(?:head|go|travel)s?\s+(?:north|south|east|west)|(?:for\s+|going\s+|heading\s+|carrying\s+)?(?:north|south|east|west)bound)))");
-  // Roads named with their axis ("a north/south rural highway and an
-  // east/west county road") give it to later sentences about them ("the
-  // county road is a 2-lane road").
-  static const string kRoadNoun = R"((?:county |state |rural |city |residential |through |collector |main |frontage )?(?:road|roadway|street|highway|avenue|boulevard|route|drive|lane))";
-  static const regex kNamedAxis(
-      R"(\b(north|south|east|west)(?:/|-|\s+and\s+)(?:north|south|east|west)\s+(?:[\w-]+\s+){0,2}?)" + kRoadNoun + R"(\b)");
-  static const regex kSubjectRoad(R"(^(?:the\s+)?)" + kRoadNoun + R"(\b)");
-  std::map<string, int> axis_of_road;
-  for (const Sentence& s : sentences) {
-    for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kNamedAxis); it != std::sregex_iterator(); ++it) {
-      const string w = (*it)[1].str(), named = it->str();
-      static const regex kTail(kRoadNoun + "$");
-      smatch nm;
-      if (std::regex_search(named, nm, kTail)) axis_of_road[nm.str()] = (w == "east" || w == "west") ? 0 : 1;
-    }
-  }
+  static const regex kSubjectRoad(R"(^(?:the\s+)?)" + AxisRoadNoun() + R"(\b)");
+  const std::map<string, int> axis_of_road = AxesOfNamedRoads(sentences);
   std::vector<RoadStatement> roads;
   // A direction the report calls a one-way road ("a northbound one-way
   // roadway"): a count of that direction's lanes is the road's total.
@@ -1549,6 +1560,16 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     }
     return nullptr;
   };
+  // A limit said of a road the report names with its axis ("an east/west
+  // 2-lane highway ... the highway is posted at 45 mph") has that axis.
+  {
+    const std::map<string, int> axis_of_road = AxesOfNamedRoads(sentences);
+    for (Limit& l : limits) {
+      if (l.axis || l.road.empty()) continue;
+      const auto named = axis_of_road.find(l.road);
+      if (named != axis_of_road.end()) l.axis = named->second;
+    }
+  }
   if (std::getenv("ACCSIM_DEBUG_ROADS")) {
     std::fprintf(stderr, "[v1 named road: %s] [v1 road: %s]\n", ctx.v1_named_road.c_str(), ctx.v1_road.c_str());
     for (const auto& l : limits) {

@@ -4103,5 +4103,34 @@ TEST(NarrativeExtractorTest, ASideStreetThatComesInFromTheSouthIsNotV1sRoad) {
   EXPECT_EQ(s.vehicles[0].movement.value, Movement::kTurnLeft);
   EXPECT_EQ(s.crash.type.value, CrashType::kTurnIntoPath);
 }
+TEST(NarrativeExtractorTest, AStopSkippedAtTheControlIsTheTurnUnlessTheTextSlowsIt) {
+  const char* kRest = " V2 was northbound. The front of V2 struck the left side of V1.";
+  // Skipped where it should have stopped, no slowing told: the turn.
+  const AccidentRecord a = kExtractor.Extract(
+      std::string("V1 was westbound in a driveway. The driver of V1 did not stop at the end of the driveway and began "
+                  "a left turn to travel south.") + kRest);
+  ASSERT_EQ(a.vehicles.size(), 2u);
+  EXPECT_EQ(a.vehicles[0].pre_event.value, Movement::kTurnLeft);
+  // ... and slowed there: slowing.
+  const AccidentRecord b = kExtractor.Extract(
+      std::string("V1 was westbound. V1 slowed at the stop sign without coming to a complete stop and turned left "
+                  "to travel south.") + kRest);
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.vehicles[0].pre_event.value, Movement::kSlowing);
+  // No stop before the turn at an uncontrolled corner: slowing for it.
+  const AccidentRecord c = kExtractor.Extract(
+      std::string("V1 was westbound and made a left turn at the intersection. The driver said he did not stop before "
+                  "making the turn.") + kRest);
+  ASSERT_EQ(c.vehicles.size(), 2u);
+  EXPECT_EQ(c.vehicles[0].pre_event.value, Movement::kSlowing);
+}
+TEST(NarrativeExtractorTest, TheLimitOfARoadNamedWithItsAxisIsThatRoads) {
+  // V1 on the northbound side road; the highway is the east/west one.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 had stopped at the stop sign at the end of a northbound two-lane road where it meets an east/west two-lane "
+      "highway. V2 was eastbound on the highway. The highway is posted at 45 mph (72 km/h) and the side road at 35 "
+      "mph (56 km/h). V1 pulled out and began its left turn; the front of V2 struck the left side of V1.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+}
 }  // namespace
 }  // namespace accsim
