@@ -412,7 +412,8 @@ void ReadVehicles(Reading& rd) {
     // clause ("was pushed into v3, a honda, which was stopped at the light"),
     // or one said to be parked: that state is from before the crash.
     static const regex kRelativeState(
-        R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)|(?:was|were|had been)\s+(?:legally\s+|lawfully\s+)?(?:parked|unoccupied))\b)");
+        R"(^v[1-9]\s*(?:,\s*(?:an?\s+)?[^,]{0,50}?(?:,|(?=\s+(?:which|that)\b)))?\s*(?:(?:which|that|who)\s+(?:was|were|had been)\s+(?:\w+\s+)?(?:stopped|parked|stationary|waiting|sitting|standing|slowing)|(?:was|were|had been)\s+(?:legally\s+|lawfully\s+)?(?:parked|unoccupied))\b)");
+    // (Also without the comma: "v3, a 2004 ford escape that was stopped".)
     // A vehicle introduced after the impact ("v2 was a 1997 dodge pickup that
     // was stopped to make a left turn"): the introduction is background.
     static const regex kIntroduction(R"(^v[1-9]\s+(?:was|is)\s+an?\s+(?:(?:19|20)\d\d|[a-z]+\s+(?:19|20)\d\d)\b)");

@@ -4132,5 +4132,13 @@ TEST(NarrativeExtractorTest, TheLimitOfARoadNamedWithItsAxisIsThatRoads) {
       "mph (56 km/h). V1 pulled out and began its left turn; the front of V2 struck the left side of V1.");
   EXPECT_NEAR(r.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
 }
+TEST(NarrativeExtractorTest, AVehicleMetAfterTheImpactKeepsItsStateWithoutAComma) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was northbound and turned left on a green ball. V2 was southbound in the curb lane. The front of V2 "
+      "struck the right side of V1. V2 rotated and its right side struck the front of V3, a 2004 Ford Escape that "
+      "was stopped eastbound at the red signal on the west leg.");
+  ASSERT_EQ(r.vehicles.size(), 3u);
+  EXPECT_EQ(r.vehicles[2].pre_event.value, Movement::kStopped);
+}
 }  // namespace
 }  // namespace accsim
