@@ -97,7 +97,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       // "was westbound in lane two, slowing from about 50 mph".
       R"((?:,|\band)\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:(?:a|an|its|his|her)\s+(?:\w+\s+)?)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
   static const regex kStraight(
-      R"(\b(?:going|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
+      R"(\b(?:going|went|travel\w*|continu\w*|proceed\w*|drove|driving)\s+straight\b|\bpass(?:ing|ed)? through the intersection|\bcross(?:ing|ed)? (?:the|through the) intersection)");
   // "... impacted the left side of a legally parked and unoccupied van": the
   // parked thing is what the vehicle struck, not the vehicle itself; nor is
   // one it saw ("could see past the parked truck").
@@ -223,7 +223,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   if (Has(std::regex_replace(t, kSlowForConditions, " "), kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
   static const regex kStarted(
-      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating|across|through)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
+      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating|across|through|off)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
   if (Has(t, kStarted)) e.started = true;
   static const regex kOnGreen(
       R"(\b(?:when|once|after|as soon as|as)\s+(?:the\s+)?(?:traffic\s+)?(?:light|signal)\s+(?:for\s+[\w ]{1,30}?\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b)");
@@ -507,7 +507,14 @@ void ReadVehicles(Reading& rd) {
   // what the vehicles did together before the impact is each one's.
   {
     static const regex kAllSubject(
-        R"((?:^|[,;:]\s*|\b(?:and|then|when|as)\s+)(?:both|all|all 3|all 4|the 2|the 3) (?:vehicles|cars|units)\b(?!\s+(?:came|were (?:towed|driven|removed)|rested)\b))");
+        R"((?:^|[,;:]\s*|\b(?:and|then|when|as)\s+)(?:both|all|all 3|all 4|the 2|the 3) (?:vehicles|cars|units)\b(?!\s+(?:came|were (?:towed|driven|removed)|rested)\b)|)"
+        // Or a bare "both" doing something ("both stopped at their signs
+        // ... and both started off"), and "both vehicles" moving off after
+        // an unpunctuated clause ("when the green arrow came on both
+        // vehicles started to move").
+        R"((?:^|[,;:]\s*|\b(?:and|then|when|as)\s+)both\s+(?=(?:then\s+)?(?:stopped|started|began|moved|pulled|proceeded|entered|slowed|braked|accelerated)\b)|)"
+        // (Not what others did: "traffic ahead of both vehicles began to slow".)
+        R"((?:^|\b(?!of\b)\w+\s+)both (?:vehicles|cars|units)\s+(?=(?:then\s+)?(?:(?:started|began)\s+(?:to\s+)?(?:move|moving|go|going|proceed\w*|accelerat\w*|forward|off)|moved|pulled|proceeded|accelerated)\b))");
     for (size_t i = 0; i < sentences.size() && i < impact; ++i) {
       const Sentence& s = sentences[i];
       smatch m;

@@ -4140,5 +4140,27 @@ TEST(NarrativeExtractorTest, AVehicleMetAfterTheImpactKeepsItsStateWithoutAComma
   ASSERT_EQ(r.vehicles.size(), 3u);
   EXPECT_EQ(r.vehicles[2].pre_event.value, Movement::kStopped);
 }
+TEST(NarrativeExtractorTest, WhatBothDidTogetherIsEachOnes) {
+  // A bare "both" that started off: V1 went straight from its stop.
+  const AccidentRecord a = kExtractor.Extract(
+      "All-way stop. V1 (2001 Ford Focus) northbound, V2 (2004 Dodge Caravan) southbound; both stopped at their signs "
+      "at nearly the same moment and both started off. V1 went straight; V2 began a left turn toward the west leg "
+      "and the front of V1 hit V2's right side.");
+  ASSERT_EQ(a.vehicles.size(), 2u);
+  EXPECT_EQ(a.vehicles[0].pre_event.value, Movement::kStraight);
+  // "both vehicles started to move" after an unpunctuated clause.
+  const AccidentRecord b = kExtractor.Extract(
+      "Vehicle 2 had been stopped first in the left-turn lane and Vehicle 1 was stopped behind it. When the green "
+      "arrow came on both vehicles started to move. The driver of Vehicle 2 braked hard for a pedestrian and the "
+      "front of Vehicle 1 struck the back of Vehicle 2.");
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.vehicles[0].pre_event.value, Movement::kStraight);
+  // Traffic ahead of both is neither.
+  const AccidentRecord c = kExtractor.Extract(
+      "V1 and V2 were westbound in lane two. Traffic ahead of both vehicles began to slow. The front of V1 struck "
+      "the back of V2.");
+  ASSERT_EQ(c.vehicles.size(), 2u);
+  EXPECT_EQ(c.vehicles[0].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
