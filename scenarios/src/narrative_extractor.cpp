@@ -420,9 +420,10 @@ void SplitSegments(Reading& rd) {
           R"(\b(watching|watched|checking|checked|looking at|looked at)\s+(?:the\s+)?(?:traffic|cars|vehicles)(?:\s+[\w']+){0,4}\s*,)");
       t = std::regex_replace(t, kWatchedTraffic, "$1,");
       // Nor the traffic it looked out for ("looked to her right for
-      // westbound traffic and then pulled out").
+      // westbound traffic and then pulled out", "was looking over his left
+      // shoulder at eastbound traffic ... and was still slowing").
       static const regex kLookedForTraffic(
-          R"(\b((?:look|check|watch)\w*)\s+(?:(?:to|at)\s+(?:his|her|the|its|their)\s+(?:left|right)\s+)?for\s+(?:[\w-]+bound\s+|oncoming\s+|approaching\s+|cross\s+|other\s+)?(?:traffic|cars|vehicles)\b(?:\s+(?:on|from|along|in)\s+(?:the\s+)?[\w-]+)?)");
+          R"(\b((?:look|check|watch|glanc)\w*)\s+(?:(?:to|at|over)\s+(?:his|her|the|its|their)\s+(?:left|right)(?:\s+shoulder)?\s+)?(?:for|at)\s+(?:[\w-]+bound\s+|oncoming\s+|approaching\s+|cross\s+|other\s+)?(?:traffic|cars|vehicles)\b(?:\s+(?:on|from|along|in)\s+(?:the\s+)?[\w-]+)?)");
       t = std::regex_replace(t, kLookedForTraffic, "$1");
       // What it tows is its own ("a 2004 mack tractor pulling a flatbed
       // semi-trailer was traveling south").

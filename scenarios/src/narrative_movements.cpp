@@ -103,6 +103,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // one it saw ("could see past the parked truck").
   static const regex kParkedObject(
       R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)(?:\s*,?\s*(?:and\s+)?(?:parked|unoccupied))?\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+[\s-])?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b|\bparked\s+(?:cars|trucks|vans|vehicles)\b|)"
+      // "thought it was parked, or going normal speed": the other's state as
+      // the driver took it.
+      R"(\b(?:thought|believed|assumed|figured|guessed)\s+(?:that\s+)?(?:it|the\s+\w+|v[1-9]|she|he|they)\s+(?:was|were|had been)\s+(?:\w+\s+)?parked\b|)"
       // "a landscaping trailer parked at the south curb limited the v2 driver's view".
       R"(\b(?:a|an|another|the)\s+(?:[\w-]+\s+){0,2}?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|trailers?|sedans?)\s+(?:was\s+)?(?:double-)?parked\b)");
   const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);
@@ -207,7 +210,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   if (Has(lanes, kLaneChange) || (Has(t, kIntoTheirLane) && Has(t, kBeside))) e.lane_change = true;
   static const regex kDrift(R"(\b(?:drifted|drifting|wandered|wandering)\b)");
   if (e.lane_change && Has(lanes, kDrift)) e.drift = true;
-  if (Has(t, kMerge)) e.merge = true;
+  // A merge still to come is no merge: "looking at traffic to judge his own merge".
+  static const regex kOwnMergeAhead(R"(\b(?:his|her|its|their|own)\s+merge\b)");
+  if (Has(std::regex_replace(t, kOwnMergeAhead, " "), kMerge)) e.merge = true;
   static const regex kInCurve(R"(\b(?:entered|entering|negotiat\w+|rounding|round|into)\s+(?:the|a)\s+(?:[\w-]+\s+){0,2}?curve\b)");
   if (Has(t, kInCurve)) e.in_curve = true;
   if (Has(t, kBack)) e.back = true;

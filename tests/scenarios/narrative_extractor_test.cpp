@@ -4162,5 +4162,24 @@ TEST(NarrativeExtractorTest, WhatBothDidTogetherIsEachOnes) {
   ASSERT_EQ(c.vehicles.size(), 2u);
   EXPECT_EQ(c.vehicles[0].pre_event.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, WhatADriverLookedAtOrTookTheOtherForIsNotItsOwn) {
+  // The traffic looked at over a shoulder does not end V1's sentence; the
+  // merge it meant to judge is still to come.
+  const AccidentRecord a = kExtractor.Extract(
+      "Vehicle 2 entered the slip lane and came to a complete stop at the yield line. Vehicle 1 followed it into "
+      "the slip lane. The driver of Vehicle 1 was looking over his left shoulder at eastbound traffic to judge his "
+      "own merge, and was still slowing when the front of his car struck the back of the stopped minivan.");
+  ASSERT_EQ(a.vehicles.size(), 2u);
+  EXPECT_EQ(a.vehicles[0].pre_event.value, Movement::kSlowing);
+  EXPECT_EQ(a.vehicles[1].pre_event.value, Movement::kStopped);
+  // "thought it was parked" is the other vehicle as the driver took it.
+  const AccidentRecord b = kExtractor.Extract(
+      "Vehicle #2, a refuse truck, was westbound moving at about 10 km/h. Vehicle #1 was westbound behind it. The "
+      "front of Vehicle #1 struck the back of the refuse truck. The Prius driver said he saw lights ahead but "
+      "\"thought it was parked, or going normal speed, I couldn't tell.\"");
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_FALSE(b.vehicles[0].parked.value);
+}
 }  // namespace
 }  // namespace accsim
