@@ -86,7 +86,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       // (Not "saw the car come over and moved right": an avoidance.)
       R"(\b(?:wanted|intended|planned|needed|decided|was going|was trying|tried|attempting)\s+to\s+(?:exit|get off|take|reach|enter|turn|make|pass)\b(?:[^.;]|\.\d){0,60}?\band\s+(?:then\s+)?(?:moved|cut|swung|eased)\s+(?:over\s+)?(?:to\s+the\s+)?(?:left|right)\b)");
   static const regex kMerge(
-      R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b)");
+      R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b|)"
+      // "came down the ramp and reached the end of the acceleration lane".
+      R"(\b(?:in|into|along|from|reached|used|using) (?:the|an|its) (?:end of (?:the|an) )?acceleration lane\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
       R"(\bbacking\s+(?:up|out|in|into|from|toward|across)\b|\b(?:began|started|attempted|tried)\s+to\s+back\s+(?:up|out|in|into)\b|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");

@@ -4181,5 +4181,20 @@ TEST(NarrativeExtractorTest, WhatADriverLookedAtOrTookTheOtherForIsNotItsOwn) {
   EXPECT_EQ(b.vehicles[0].pre_event.value, Movement::kStraight);
   EXPECT_FALSE(b.vehicles[0].parked.value);
 }
+TEST(NarrativeExtractorTest, AVehicleOutOfTheAccelerationLaneIsMerging) {
+  const AccidentRecord r = kExtractor.Extract(
+      "A one-lane entrance ramp joins the eastbound side of a four-lane freeway. Vehicle 1 came down the ramp and "
+      "reached the end of the acceleration lane while Vehicle 2 was traveling east in the right lane beside it. "
+      "Vehicle 1 moved left into lane one and the left side of Vehicle 1 struck the right side of Vehicle 2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+  // Near the end of the acceleration lane is a place, not the focus vehicle's merge.
+  const AccidentRecord s = kExtractor.Extract(
+      "V1 came down the ramp and was merging into the right lane of the interstate. V2 was eastbound in the right "
+      "lane. Near the end of the acceleration lane, V1 moved left and its left front contacted the right side of V2.");
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  EXPECT_EQ(s.vehicles[1].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
