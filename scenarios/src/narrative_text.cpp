@@ -234,6 +234,40 @@ string Normalise(std::string_view in) {
     numbered_names[name].insert(m[2].str());
     return "v" + m[2].str() + (m[3].matched ? m[3].str() : string());
   });
+  // A report that names its vehicles by make and numbers them only at the
+  // end: "the lincoln was coded as v1", "v2, the jetta, had ...", "the van
+  // was numbered v2 and the saturn v1". An explicit numbering may name a
+  // class word too ("the van").
+  std::set<string> declared;
+  {
+    static const regex kCodedAs(
+        R"(\bthe\s+([a-z][a-z0-9-]+(?:\s+[a-z][a-z0-9-]+)?)\s+(?:was|is)\s+(?:coded|numbered|designated|assigned|labell?ed|listed|identified|referred to)\s+(?:as\s+)?v([1-9])\b(?:\s+and\s+the\s+([a-z][a-z0-9-]+)\s+(?:as\s+)?v([1-9])\b)?)");
+    static const regex kNumberedThe(R"(\bv([1-9])\s*,\s*the\s+([a-z][a-z0-9-]+)\s*,)");
+    static const regex kNotAName(R"(^(?:vehicle|car|driver|other|first|second|third|striking|struck|case|bullet|target|lead|following|front|rear)$)");
+    auto declare = [&](const string& name, const string& number) {
+      if (Has(name, kNotAName)) return;
+      numbered_names[name].insert(number);
+      declared.insert(name);
+    };
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kCodedAs); it != std::sregex_iterator(); ++it) {
+      declare((*it)[1].str(), (*it)[2].str());
+      if ((*it)[3].matched) declare((*it)[3].str(), (*it)[4].str());
+    }
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kNumberedThe); it != std::sregex_iterator(); ++it) {
+      declare((*it)[2].str(), (*it)[1].str());
+    }
+    // ... and the make of a model so numbered: "the volkswagen, a 2002
+    // jetta" when the jetta is v2.
+    if (!declared.empty()) {
+      static const regex kMakeOfModel(R"(\bthe\s+([a-z][a-z-]+)\s*,\s*an?\s+(?:19|20)\d\d\s+([a-z][a-z0-9-]+)\b)");
+      for (auto it = std::sregex_iterator(s.begin(), s.end(), kMakeOfModel); it != std::sregex_iterator(); ++it) {
+        const auto model = numbered_names.find((*it)[2].str());
+        if (model != numbered_names.end() && model->second.size() == 1 && !numbered_names.count((*it)[1].str())) {
+          declare((*it)[1].str(), *model->second.begin());
+        }
+      }
+    }
+  }
   // A make or model numbered once ("the xterra (v1) was southbound") names
   // that vehicle wherever else it recurs ("struck the left side of the
   // xterra"); a class word ("the pickup (v2)") may be another's too.
@@ -241,7 +275,9 @@ string Normalise(std::string_view in) {
     static const regex kGeneric(
         R"(^(?:(?:\w+\s+)?(?:vehicle|car|truck|pickup|van|minivan|suv|sedan|coupe|wagon|bus|motorcycle|semi|tractor|trailer|taxi|cab|jeep|unit|driver)s?|other|first|second|third|striking|struck)$)");
     for (const auto& [name, numbers] : numbered_names) {
-      if (numbers.size() != 1 || name.size() < 4 || Has(name, kGeneric)) continue;
+      if (numbers.size() != 1 || name.size() < 3 || (!declared.count(name) && (name.size() < 4 || Has(name, kGeneric)))) {
+        continue;
+      }
       const regex again(R"(\bthe\s+)" + EscapeRegex(name) + R"(\b(?!\s*\())");
       s = std::regex_replace(s, again, "v" + *numbers.begin());
     }

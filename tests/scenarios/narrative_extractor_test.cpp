@@ -4196,5 +4196,25 @@ TEST(NarrativeExtractorTest, AVehicleOutOfTheAccelerationLaneIsMerging) {
   ASSERT_EQ(s.vehicles.size(), 2u);
   EXPECT_EQ(s.vehicles[1].pre_event.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, VehiclesNamedByMakeAndNumberedAtTheEnd) {
+  const AccidentRecord a = kExtractor.Extract(
+      "The Chevrolet Express was a parcel delivery van. Its driver had passed the house he was looking for and "
+      "stopped in the southbound lane. The Saturn SL behind him also stopped. The van driver then put the van in "
+      "reverse and backed up in the lane. Its back struck the front of the Saturn. The van was numbered Vehicle 2 "
+      "and the Saturn Vehicle 1.");
+  ASSERT_EQ(a.vehicles.size(), 2u);
+  EXPECT_EQ(a.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(a.vehicles[1].pre_event.value, Movement::kBacking);
+  EXPECT_EQ(a.crash.striking.value, "V2");
+  const AccidentRecord b = kExtractor.Extract(
+      "The Lincoln, a 1998 Town Car, was parallel-parked on the east curb facing north. Its driver pulled out of the "
+      "space to continue north. The Volkswagen, a 2002 Jetta, was northbound in the travel lane. The left front "
+      "corner of the Lincoln struck the right side of the Volkswagen. The Lincoln was coded as Vehicle 1. Vehicle "
+      "2, the Jetta, had other vehicle encroachment from the parking lane as its critical event.");
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.vehicles[0].pre_event.value, Movement::kMerging);  // leaving the parking position
+  EXPECT_EQ(b.crash.striking.value, "V1");
+  EXPECT_EQ(b.crash.struck_area.value, DamageArea::kRight);
+}
 }  // namespace
 }  // namespace accsim
