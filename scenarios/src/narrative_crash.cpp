@@ -244,6 +244,13 @@ void ReadContact(Reading& rd) {
       }
     }
     const string contact_clause = s.substr(clause);
+    // "the fronts of v1 and v2 collided": both vehicles' fronts.
+    static const regex kBothOf(
+        R"(\b(fronts|front ends|rears|rear ends|left sides|right sides)\s+of\s+(?:the\s+)?v([1-9])\s+and\s+(?:the\s+)?v([1-9])\b)");
+    if (smatch bm; std::regex_search(contact_clause, bm, kBothOf)) {
+      note(std::stoi(bm[2].str()), bm[1].str());
+      note(std::stoi(bm[3].str()), bm[1].str());
+    }
     for (const string* part_of : {&contact_clause, &s}) {
       const string& part = *part_of;
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kOfV); it != std::sregex_iterator(); ++it) {

@@ -232,10 +232,25 @@ void FindImpact(Reading& rd) {
       // (Or later, when the report opens with the collision and then tells
       // the approach: "the striking vehicle ... and the turning vehicle ...
       // collided at the intersection of ... . v1 was westbound ...".)
+      // (When the pair is named, "the fronts of v1 and v2 collided", only a
+      // retelling of that pair: "v2 rotated and struck v3" is a later
+      // contact.)
+      static const regex kPairBefore(R"(\bv([1-9])\s+and\s+(?:the\s+)?v([1-9])\s+(?:\w+\s+)?$)");
+      smatch pm;
+      const string before_verb = s.text.substr(0, static_cast<size_t>(vm.position()));
+      const bool pair_named = std::regex_search(before_verb, pm, kPairBefore);
+      auto retells_pair = [&](const Sentence& next) {
+        if (!pair_named) return true;
+        auto has = [&](const string& n) {
+          return std::any_of(next.refs.begin(), next.refs.end(), [&](const Ref& ref) { return ref.vehicle == std::stoi(n); });
+        };
+        return has(pm[1].str()) && has(pm[2].str());
+      };
       for (size_t k = impact + 1; !object_named && k < sentences.size() && k <= impact + 12; ++k) {
         const Sentence& next = sentences[k];
         if (next.kind == Kind::kCoding) break;
-        if (next.kind == Kind::kNarrative && DistinctVehicles(next.refs) >= 2 && Has(next.text, ContactVerb())) {
+        if (next.kind == Kind::kNarrative && DistinctVehicles(next.refs) >= 2 && Has(next.text, ContactVerb()) &&
+            retells_pair(next)) {
           impact = k;
           break;
         }

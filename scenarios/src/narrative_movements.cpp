@@ -390,6 +390,7 @@ void ReadVehicles(Reading& rd) {
   std::vector<MovementEvidence>& narrative = rd.narrative;
   std::vector<MovementEvidence>& statement = rd.statement;
   std::vector<int> relation(r.vehicles.size() + 1, 0);  // +1 same direction as the other, -1 opposite
+  std::vector<int> relation_to(r.vehicles.size() + 1, 0);  // the vehicle it is relative to, when named
   std::vector<std::optional<Compass>> late_travel(r.vehicles.size() + 1);
   // A turn told by the compass ("intending to turn west", "turned north
   // onto elm"): left or right once the vehicle's own course is known.
@@ -441,6 +442,9 @@ void ReadVehicles(Reading& rd) {
       if (relation[vi] == 0 && pre_impact) {
         if (Has(seg.text, kOppositeDir)) relation[vi] = -1;
         else if (Has(seg.text, kSameDir)) relation[vi] = 1;
+        // "had been behind v3": relative to the vehicle it names.
+        static const regex kBehindWhom(R"(\b(?:behind|following|followed)\s+v([1-9])\b)");
+        if (smatch bw; relation[vi] > 0 && std::regex_search(seg.text, bw, kBehindWhom)) relation_to[vi] = std::stoi(bw[1].str());
       }
       // Where it came to rest ("came to rest in lane 3") is not its lane,
       // nor is another vehicle's ("thought v2 was in lane 2").
@@ -567,9 +571,11 @@ void ReadVehicles(Reading& rd) {
   // after the impact, and the relative ones again.
   auto relative_directions = [&] {
     if (r.vehicles.size() < 2) return;
-    for (size_t i = 1; i <= 2; ++i) {
+    for (size_t i = 1; i < relation.size(); ++i) {
+      const size_t other = relation_to[i] > 0 ? static_cast<size_t>(relation_to[i]) : (i <= 2 ? 3 - i : 0);
+      if (other == 0 || other == i || other > r.vehicles.size()) continue;
       VehicleRecord& v = r.vehicles[i - 1];
-      const VehicleRecord& o = r.vehicles[2 - i];
+      const VehicleRecord& o = r.vehicles[other - 1];
       if (!v.travel.known() && o.travel.known() && o.travel.value && relation[i] != 0) {
         const Compass c = *o.travel.value;
         v.travel.Set(relation[i] > 0 ? c : static_cast<Compass>((static_cast<int>(c) + 2) % 4), Provenance::kInferred);

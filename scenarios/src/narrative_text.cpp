@@ -609,6 +609,15 @@ std::optional<Compass> DirectionIn(const string& s) {
     const size_t at = static_cast<size_t>(m.position());
     if (m[2].matched && Has(Before(s, at, 50) + m[0].str(), kIntended)) continue;
     if (m[1].matched && (Has(s.substr(at, 40), kOthersTraffic) || Has(Before(s, at, 40), kWaitedFor))) continue;
+    // "pulled out into the westbound lane to pass": the lane it moved into,
+    // the other direction's.
+    static const regex kMovedInto(R"(\b(?:into|onto|across|over)\s+(?:the\s+)?$)");
+    if (m[1].matched && Has(s.substr(at, 40), kBoundLane) && Has(Before(s, at, 20), kMovedInto)) continue;
+    // Nor the lane the contact was in: "the fronts of v1 and v2 collided in
+    // the westbound lane".
+    static const regex kContactIn(
+        R"(\b(?:collided|struck|hit|impacted|contacted|crashed|met|occurred)\b(?:\s+[\w-]+){0,4}?\s+(?:in|within)\s+(?:the\s+)?$)");
+    if (m[1].matched && Has(s.substr(at, 40), kBoundLane) && Has(Before(s, at, 50), kContactIn)) continue;
     for (int g = 1; g <= 3; ++g) {
       if (!m[g].matched) continue;
       const bool turn = m[0].str().rfind("turn", 0) == 0;

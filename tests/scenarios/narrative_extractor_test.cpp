@@ -4216,5 +4216,19 @@ TEST(NarrativeExtractorTest, VehiclesNamedByMakeAndNumberedAtTheEnd) {
   EXPECT_EQ(b.crash.striking.value, "V1");
   EXPECT_EQ(b.crash.struck_area.value, DamageArea::kRight);
 }
+TEST(NarrativeExtractorTest, APassingVehicleTakesTheDirectionOfTheVehicleItFollowed) {
+  // "Behind v3" is relative to V3; the lane it pulled into and the lane of
+  // the contact are not its own direction.
+  const AccidentRecord r = kExtractor.Extract(
+      "The two-lane highway runs north-south and is posted at 45 mph. V3, a grain truck, was northbound at about 25 "
+      "mph. V2, a 2006 Honda Civic, had been following V3 for a mile and pulled out into the southbound lane to pass "
+      "it. V1, a 2001 Dodge Dakota, was southbound. The fronts of V1 and V2 collided in the southbound lane, and V2 "
+      "then struck the left side of V3.");
+  ASSERT_EQ(r.vehicles.size(), 3u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kNorth);
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kFront);
+}
 }  // namespace
 }  // namespace accsim
