@@ -180,6 +180,12 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_ba", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
         {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.92}}},
+      {"nmvccs_style_bc", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.95}, {"lane_count", 0.87},
+        {"collision_location", 0.97}, {"driving_actions", 0.78}, {"crash_type", 0.92}}},
+      {"nmvccs_style_bd", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.92},
+        {"collision_location", 0.97}, {"driving_actions", 0.80}, {"crash_type", 0.89}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -202,7 +208,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
   for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v", "ciren_style_z",
                           "ciren_style_ab", "ciren_style_ad", "ciren_style_af",
                           "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar",
-                          "ciren_style_av", "ciren_style_ay", "ciren_style_bb"}) {
+                          "ciren_style_av", "ciren_style_ay", "ciren_style_bb", "ciren_style_be"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});
