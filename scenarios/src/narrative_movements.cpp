@@ -425,7 +425,12 @@ void ReadVehicles(Reading& rd) {
     // A vehicle introduced after the impact ("v2 was a 1997 dodge pickup that
     // was stopped to make a left turn"): the introduction is background.
     static const regex kIntroduction(R"(^v[1-9]\s+(?:was|is)\s+an?\s+(?:(?:19|20)\d\d|[a-z]+\s+(?:19|20)\d\d)\b)");
-    const bool state_in_relative = !pre_impact && (Has(seg.text, kRelativeState) || Has(seg.text, kIntroduction));
+    // Several vehicles' state told together after the impact ("vehicles 3
+    // and 4 were stopped and had no part in the first collision"): being
+    // pushed does not leave two vehicles "stopped"; the state is before it.
+    static const regex kStateTogether(R"(^v[1-9]\s+were\s+(?:both\s+|all\s+)?(?:stopped|stationary|waiting|queued|parked)\b(?!\s+by\b))");
+    const bool state_in_relative =
+        !pre_impact && (Has(seg.text, kRelativeState) || Has(seg.text, kIntroduction) || Has(seg.text, kStateTogether));
     smatch m;
     if (kind == Kind::kNarrative || kind == Kind::kStatement) {
       // After the impact a direction is where the vehicle went ("continued
@@ -488,7 +493,17 @@ void ReadVehicles(Reading& rd) {
       note_compass_turns(true);
     } else if (kind == Kind::kCoding) {
       MovementEvidence* other = nullptr;
-      if (r.vehicles.size() == 2) other = &narrative[vi == 1 ? 2 : 1];
+      if (r.vehicles.size() == 2) {
+        other = &narrative[vi == 1 ? 2 : 1];
+      } else if (rd.impact < sentences.size()) {
+        // More vehicles: the other one is its partner in the first contact
+        // when the contact names just the two.
+        std::set<int> pair;
+        for (const Ref& ref : sentences[rd.impact].refs)
+          if (ref.vehicle >= 1 && ref.vehicle < static_cast<int>(narrative.size())) pair.insert(ref.vehicle);
+        if (pair.size() == 2 && pair.count(static_cast<int>(vi)))
+          other = &narrative[static_cast<size_t>(*pair.begin() == static_cast<int>(vi) ? *pair.rbegin() : *pair.begin())];
+      }
       ReadCoding(seg.text, narrative[vi], other);
     }
   }

@@ -152,6 +152,16 @@ string Normalise(std::string_view in) {
   static const regex kVehicle(
       R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kVehicle, "v$1");
+  // Several vehicles named at once: "vehicles 3 and 4", "vehicles #2, #3 and
+  // #4" are "v3 and v4", each a reference of its own.
+  static const regex kVehicles(R"(\bvehicles\s*#?\s*([1-9])((?:\s*,\s*#?\s*[1-9])*)\s*,?\s*(?:and|&)\s*#?\s*([1-9])\b)" + kNotAUnit);
+  s = ReplaceWith(s, kVehicles, [](const smatch& m) {
+    string out = "v" + m[1].str();
+    const string mid = m[2].str();
+    for (char c : mid)
+      if (c >= '1' && c <= '9') out += ", v" + string(1, c);
+    return out + " and v" + m[3].str();
+  });
   // Police shorthand: "u2" (unit 2) and "d1" (driver 1), only as whole words.
   static const regex kShortRef(R"(\b[ud]([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kShortRef, "v$1");

@@ -4230,5 +4230,20 @@ TEST(NarrativeExtractorTest, APassingVehicleTakesTheDirectionOfTheVehicleItFollo
   EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kFront);
 }
+TEST(NarrativeExtractorTest, VehiclesNamedTogetherAndTheCodedPartnerOfAChain) {
+  // "Vehicles 3 and 4 were stopped" after the impact is their state before
+  // it; V1's coded "other vehicle stopped" is the vehicle it struck.
+  const AccidentRecord r = kExtractor.Extract(
+      "Traffic on the two-lane road was held at a work zone. Vehicle #4, a Ford Ranger, was first in the queue, "
+      "with Vehicle #3, a Honda Accord, and Vehicle #2, a Jeep Liberty, behind it. Vehicle #1, a Chevrolet "
+      "Silverado, came over the hill and struck the back of Vehicle #2. Vehicle #2 was pushed into Vehicle #3, which "
+      "was pushed into Vehicle #4. Vehicles #3 and #4 were stopped and took no part in the first impact. V1: "
+      "critical event, other vehicle stopped.");
+  ASSERT_EQ(r.vehicles.size(), 4u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[2].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[3].pre_event.value, Movement::kStopped);
+}
 }  // namespace
 }  // namespace accsim
