@@ -4245,5 +4245,14 @@ TEST(NarrativeExtractorTest, VehiclesNamedTogetherAndTheCodedPartnerOfAChain) {
   EXPECT_EQ(r.vehicles[2].pre_event.value, Movement::kStopped);
   EXPECT_EQ(r.vehicles[3].pre_event.value, Movement::kStopped);
 }
+TEST(NarrativeExtractorTest, CarsParkedAlongTheCurbsAreNotTheVehicleOfTheLastSentence) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was backing out of a driveway on the north side of the street. V2 was traveling east on the street at "
+      "about 25 mph. Cars were parked along both curbs. V1 backed into the eastbound lane and the front of V2 struck "
+      "the left side of V1.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kBacking);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
