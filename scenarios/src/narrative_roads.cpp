@@ -574,6 +574,11 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
     const Sentence& s = sentences[i];
     if (s.kind != Kind::kNarrative && s.kind != Kind::kStatement) continue;
     auto add = [&](const smatch& m, size_t pos, int total, int per_dir, int directional) {
+      // The count may sit inside its match ("widened from 2 lanes to 3":
+      // pos is the "3"); what follows it runs to the match's end at most.
+      pos = std::min(pos, s.text.size());
+      const size_t match_end = static_cast<size_t>(m.position(0) + m.length(0));
+      const size_t len = std::min(s.text.size(), std::max(match_end, pos)) - pos;
       RoadStatement rs;
       rs.sentence = i;
       rs.pos = pos;
@@ -588,19 +593,19 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       rs.met = Has(Before(s.text, pos, 40), kMetRoad) || Has(Before(s.text, pos, 70), kMetAtJunction);
 
       const size_t from = pos > 60 ? pos - 60 : 0;
-      const string around = s.text.substr(from, pos - from + static_cast<size_t>(m.length(0)) + 40);
+      const string around = s.text.substr(from, pos - from + len + 40);
       // The road's axis: named up to the count ("an east-west roadway with
       // two lanes each way"), else after it ("a 4-lane road running
       // north-south"); the next road's ("..., and a northbound one-way")
       // is not this one's.
       const size_t start = RoadPhraseStart(s.text, pos);
-      rs.axis = AxisIn(s.text.substr(start, pos - start + static_cast<size_t>(m.length(0))));
+      rs.axis = AxisIn(s.text.substr(start, pos - start + len));
       // "..., and mill street, a 2-lane north/south residential street":
       // the count's own noun phrase before the wider window.
       if (!rs.axis) {
         static const regex kOwnPhraseAxis(R"(^[^,;.]{0,12}?\b((?:north|south|east|west)(?:/|-|\s+and\s+)(?:north|south|east|west))\b)");
         smatch am;
-        const string own = s.text.substr(pos + static_cast<size_t>(m.length(0)), 30);
+        const string own = s.text.substr(pos + len, 30);
         if (std::regex_search(own, am, kOwnPhraseAxis)) rs.axis = AxisIn(am[1].str());
       }
       // (Not the met road's: "on the northbound approach of a street where
@@ -613,7 +618,7 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
         static const regex kEntersFrom(
             R"(^(?:(?!\band\s+(?:a|an|the)\b)[^;]){0,70}?\b(?:enter\w*|(?:com(?:es|ing)|came)\s+in|join\w*|branch\w*|tee[sd]?\s+in)\s+from\s+the\s+(?:north|south|east|west)\b)");
         smatch em;
-        const string rest = s.text.substr(pos + static_cast<size_t>(m.length(0)));
+        const string rest = s.text.substr(pos + len);
         if (std::regex_search(rest, em, kEntersFrom)) rs.axis = AxisIn(em.str());
       }
       if (!rs.met) rs.axis = ctx.InheritedAxis(i, rs.axis);
@@ -628,7 +633,7 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       string near_before = Before(s.text, pos, 40);
       const size_t other_road = near_before.rfind(" and ");
       if (other_road != string::npos) near_before = near_before.substr(other_road);
-      string near_after = s.text.substr(pos + static_cast<size_t>(m.length(0)), 15);
+      string near_after = s.text.substr(pos + len, 15);
       // ... but "a 1-lane, oneway roadway" lists adjectives of one road.
       const size_t comma = near_after.rfind(", oneway", 0) == 0 || near_after.rfind(",oneway", 0) == 0
                                ? string::npos
@@ -649,14 +654,14 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       // that widened from 1 lane to 2 lanes near its end".
       static const regex kRampSubject(
           R"(^(?:(?:at|near|approaching|toward|towards)\s+(?:the|its)\s+(?:[\w-]+\s+){0,2}?)?(?:the|this|that)\s+(?:[\w/-]+\s+){0,3}?ramp\s+(?:was|is|had|has|widened|widens|carried|carries)\b[^;]*$)");
-      rs.ramp = Has(s.text.substr(pos + static_cast<size_t>(m.length(0)), 40), kRampAfter) ||
+      rs.ramp = Has(s.text.substr(pos + len, 40), kRampAfter) ||
                 Has(s.text.substr(0, pos), kRampSubject);
       // The phrase runs on to the next road named ("1 lane in each direction
       // and an east/west 2-way roadway with ... a center left turn lane":
       // the centre lane is the other road's).
       static const regex kCentreLane(
           R"(\b(?:center|centre|continuous|middle)\s+(?:2[- ]way\s+)?(?:left[- ]turn\s+)?lane\b|\b2[- ]way left[- ]turn lane\b)");
-      string phrase_after = s.text.substr(pos + static_cast<size_t>(m.length(0)));
+      string phrase_after = s.text.substr(pos + len);
       smatch rw;
       if (std::regex_search(phrase_after, rw, RoadWord())) {
         const size_t at = static_cast<size_t>(rw.position());

@@ -4254,5 +4254,14 @@ TEST(NarrativeExtractorTest, CarsParkedAlongTheCurbsAreNotTheVehicleOfTheLastSen
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kBacking);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, ARoadWideningToACountAtTheEndOfASentenceIsRead) {
+  // The count ends the sentence: what follows it is empty, not past the end.
+  AccidentRecord r;
+  ASSERT_NO_THROW(r = kExtractor.Extract(
+                      "V1 was eastbound on the avenue. East of the last cross street the eastbound side widens from "
+                      "two lanes to three; the added lane becomes the ramp. V1 struck the back of V2."));
+  EXPECT_EQ(r.vehicles.size(), 2u);
+  ASSERT_NO_THROW(kExtractor.Extract("The road widened from 2 lanes to 3"));
+}
 }  // namespace
 }  // namespace accsim
