@@ -829,6 +829,25 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
   std::stable_sort(roads.begin(), roads.end(), [](const RoadStatement& a, const RoadStatement& b) {
     return a.sentence != b.sentence ? a.sentence < b.sentence : a.pos < b.pos;
   });
+  // "3 through lanes in each direction ...; each direction also has a
+  // left-turn bay": the bay is one more lane of each direction, as the coded
+  // counts include turn lanes. Said within two sentences of the count.
+  static const regex kEachBay(
+      R"(\b(?:each|every|both)\s+(?:direction|approach|approaches|side|sides|leg)\s+(?:also\s+)?(?:has|had|have|includes?|included|gets?|got)\s+(?:also\s+)?(?:a|an|1)\s+(?:single\s+|dedicated\s+|exclusive\s+|separate\s+)?(?:left|right)[- ]turn(?:[- ]only)?\s+(?:lane|bay|pocket)\b)");
+  for (size_t i = 0; i < sentences.size(); ++i) {
+    const Sentence& s = sentences[i];
+    smatch m;
+    if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kEachBay)) continue;
+    const size_t at = static_cast<size_t>(m.position());
+    for (auto it = roads.rbegin(); it != roads.rend(); ++it) {
+      if (it->sentence > i || (it->sentence == i && it->pos > at)) continue;
+      if (i - it->sentence > 2) break;
+      if (it->per_direction > 0) {
+        ++it->per_direction;
+        break;
+      }
+    }
+  }
   return roads;
 }
 // The lane statement taken for V1's road, and whether V1 is said to use a

@@ -4263,5 +4263,18 @@ TEST(NarrativeExtractorTest, ARoadWideningToACountAtTheEndOfASentenceIsRead) {
   EXPECT_EQ(r.vehicles.size(), 2u);
   ASSERT_NO_THROW(kExtractor.Extract("The road widened from 2 lanes to 3"));
 }
+TEST(NarrativeExtractorTest, ATurnBayOfEachDirectionIsOneMoreLaneOfIt) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was westbound on a divided suburban arterial with three through lanes in each direction separated by a "
+      "raised median; each approach also has a left-turn bay. V1 turned left and V2, eastbound, struck its right "
+      "side.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 4);
+  // Without the bay, the through lanes.
+  const AccidentRecord s = kExtractor.Extract(
+      "V1 was westbound on a divided suburban arterial with three through lanes in each direction separated by a "
+      "raised median. V1 turned left and V2, eastbound, struck its right side.");
+  EXPECT_EQ(s.road.lanes_per_direction.value, 3);
+}
 }  // namespace
 }  // namespace accsim
