@@ -430,6 +430,29 @@ RoadContext::RoadContext(const Reading& rd) : sentences(rd.sentences), names(Sce
     }
     if (signed_roads.size() == 1) v1_road = *signed_roads.begin();
   }
+  // V1's road ends at the other ("southbound on a residential street that
+  // ends in a t-intersection with the arterial"): it is the side road the
+  // report gives the limit and lanes of ("the side street, 25 mph").
+  if (!v1_road.empty() && v1_road.find("side ") == string::npos) {
+    static const regex kEndsAtOther(
+        R"(\b(?:that|which)\s+(?:ends|ended|terminates|terminated|tees|teed|dead-ends)\s+(?:in|at|into)\s+(?:a|an|the)\s+(?:t-?|3-leg\s+|three-leg\s+)?(?:intersection|junction)\b)");
+    static const regex kSideRoad(R"(\bthe\s+(side\s+(?:street|road))\b)");
+    bool ends = false;
+    for (const Segment& seg : rd.segments) {
+      if (seg.vehicle == 1 && !seg.perceived && sentences[seg.sentence].kind == Kind::kNarrative &&
+          seg.text.find(v1_road) != string::npos && Has(seg.text, kEndsAtOther)) {
+        ends = true;
+        break;
+      }
+    }
+    smatch sm;
+    for (const Sentence& s : sentences) {
+      if (ends && s.kind == Kind::kNarrative && std::regex_search(s.text, sm, kSideRoad)) {
+        v1_road = sm[1].str();
+        break;
+      }
+    }
+  }
   distinctive = !v1_road.empty() && !GenericRoad(v1_road);
 }
 
@@ -1407,9 +1430,15 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
                                       R"(\s*(?:,|:|-|is|was)?\s*(\d{2,3})\s*(kmh|mph)\b)");
   size_t order = 0;
   size_t last_with_limit = sentences.size();
+  // Limits said to be the usual ones ("the normal speed limit is 65 mph;
+  // within the work zone the limit is reduced to 45 mph"): a reduction in
+  // the next sentences replaces them. (First index in `limits`, sentence.)
+  static const regex kUsual(R"(\b(?:normal(?:ly)?|usual(?:ly)?|regular|otherwise)\b)");
+  std::optional<std::pair<size_t, size_t>> usual;
   for (const Sentence& s : sentences) {
     if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
     const size_t index = static_cast<size_t>(&s - sentences.data());
+    if (!usual && Has(s.text, kUsual)) usual = std::make_pair(limits.size(), index);
     if (s.text.find("limit") == string::npos && s.text.find("posted") == string::npos &&
         s.text.find(" zone") == string::npos) {
       smatch m;
@@ -1467,10 +1496,14 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
       last_value_end = pos + static_cast<size_t>(it->length(0));
       // "the normal 65 mph limit is reduced to a posted 45 mph": the
       // reduced value replaces the one it reduces.
+      // (Also "drops from 55 mph to 35 mph".)
       static const regex kReducedTo(
-          R"(\b(?:reduced|lowered|dropp?(?:ed|s)|decreas\w+|cut)\s+to\s+(?:an?\s+)?(?:posted\s+|temporary\s+)?$)");
-      if (Has(Before(s.text, pos, 40), kReducedTo)) {
+          R"(\b(?:reduced|lowered|dropp?(?:ed|s)|decreas\w+|cut)\s+(?:from\s+\d{2,3}\s*(?:kmh|mph)\s*(?:\(\s*\d{2,3}\s*(?:kmh|mph)\s*\)\s*)?)?to\s+(?:an?\s+)?(?:posted\s+|temporary\s+)?$)");
+      if (Has(Before(s.text, pos, 50), kReducedTo)) {
         limits.resize(sentence_first);
+        if (usual && usual->first < sentence_first && index - usual->second <= 2) {
+          limits.resize(usual->first);
+        }
       }
       const bool kmh = (*it)[2].str() == "kmh";
       const double value = std::stod((*it)[1].str());

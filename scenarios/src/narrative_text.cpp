@@ -459,7 +459,10 @@ Kind KindOf(const string& s) {
       // ... nor the driver's age as the subject of the vehicle's movement
       // ("its 58-year-old driver stopped at the stop sign and began a right turn",
       // "v2's 66-year-old driver had his left signal on and was slowing").
-      R"(\b(?:the|its|his|her|v[1-9]'s)\s+\d+[- ]year[- ]old\s+(?:male\s+|female\s+)?(?:driver|operator)(?:\s+of\s+v[1-9])?\s+(?=(?:then\s+)?(?:stopped|began|started|turned|pulled|slowed|braked|backed|accelerated|entered|proceeded|attempted|drove|steered|swerved|merged|changed|failed|did not|allowed|let|lost|drifted|veered|crossed|continued|ran|tried|made|moved|had (?:his|her|its|the) (?:left |right )?(?:turn )?signal on|had (?:just )?(?:stopped|slowed|begun|started|pulled|come|entered|turned|been (?:stopped|traveling|driving|waiting|slowing))|was (?:traveling|driving|going|stopped|slowing|turning|backing|attempting))\b)|,\s*who had [^,;()]{0,40}?passengers?\s*,|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
+      R"(\b(?:the|its|his|her|v[1-9]'s)\s+\d+[- ]year[- ]old\s+(?:male\s+|female\s+)?(?:driver|operator)(?:\s+of\s+v[1-9])?\s+(?=(?:then\s+)?(?:stopped|began|started|turned|pulled|slowed|braked|backed|accelerated|entered|proceeded|attempted|drove|steered|swerved|merged|changed|failed|did not|allowed|let|lost|drifted|veered|crossed|continued|ran|tried|made|moved|had (?:his|her|its|the) (?:left |right )?(?:turn )?signal on|had (?:just )?(?:stopped|slowed|begun|started|pulled|come|entered|turned|been (?:stopped|traveling|driving|waiting|slowing))|was (?:traveling|driving|going|stopped|slowing|turning|backing|attempting))\b)|,\s*who had [^,;()]{0,40}?passengers?\s*,|)"
+      // ... nor who rode along ("was southbound ... with the driver's
+      // 10-year-old grandson in the back seat").
+      R"(\bwith (?:the driver's |his |her |their |a |an |two |three |\d+ )[^,;()]{0,40}?\b(?:son|daughter|grandson|granddaughter|child|children|kids?|wife|husband|mother|father|friends?|coworkers?|baby|infant|toddler|dog)s?\b(?:\s+(?:in the (?:back|rear|front) seat|aboard|along|on board))?|\bpassenger'?s?[- ](?:side|door|front|rear|corner|fender)\b)");
   if (Has(s, kCoding)) return Kind::kCoding;
   if (Has(s, kStatement)) return Kind::kStatement;
   if (Has(std::regex_replace(s, kPeoplePhrase, " "), kPeople)) return Kind::kPeople;

@@ -4276,5 +4276,26 @@ TEST(NarrativeExtractorTest, ATurnBayOfEachDirectionIsOneMoreLaneOfIt) {
       "raised median. V1 turned left and V2, eastbound, struck its right side.");
   EXPECT_EQ(s.road.lanes_per_direction.value, 3);
 }
+TEST(NarrativeExtractorTest, TheLimitAtTheCrashIsTheReducedOneAndTheSideRoadsForAVehicleOnIt) {
+  auto limit_mph = [](const char* text) { return kExtractor.Extract(text).road.speed_limit_mps.value / 0.44704; };
+  // "drops from 55 mph to 35 mph": the value it drops to.
+  EXPECT_NEAR(limit_mph("V1 was eastbound. The posted speed limit drops from 55 mph to 35 mph (56 km/h) about 300 "
+                        "meters west of the signal. V1 struck the back of V2."),
+              35.0, 1e-6);
+  // The normal limit, then the work zone's told after a semicolon.
+  EXPECT_NEAR(limit_mph("The normal speed limit is 65 mph; within the posted work zone the limit is reduced to 45 mph "
+                        "(72 km/h). V1 was eastbound and struck the back of V2."),
+              45.0, 1e-6);
+  // V1's street ends at the arterial: it is "the side street".
+  EXPECT_NEAR(limit_mph("V1 was southbound on a two-lane residential street that ends in a T-intersection with a "
+                        "divided arterial. The arterial is posted 55 mph; the side street, 25 mph. V1 stopped at the "
+                        "stop sign and turned left, and V2, eastbound, struck the right side of V1."),
+              25.0, 1e-6);
+  // Who rode along does not make V1's travel sentence one about people.
+  EXPECT_NEAR(limit_mph("The east-west road has a 55 mph speed limit and the north-south road a 45 mph limit. V1, a "
+                        "2002 Mitsubishi Galant, was southbound on the north-south road with the driver's 10-year-old "
+                        "grandson in the back seat. V2 was westbound and struck the left side of V1."),
+              45.0, 1e-6);
+}
 }  // namespace
 }  // namespace accsim
