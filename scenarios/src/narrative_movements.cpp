@@ -528,6 +528,32 @@ void ReadVehicles(Reading& rd) {
       mark(s, static_cast<size_t>(m.position() + m.length()));
       for (size_t j = i + 1; j < sentences.size() && Has(sentences[j].text, kListItem); ++j) mark(sentences[j], 0);
     }
+    // ... and with the state after the list ("from front to back: v4, a
+    // honda; v3, a malibu; and v2, a camry, were all stopped"): the list's
+    // items run back over the ";"-separated pieces without a verb.
+    static const regex kStateAfterList(
+        R"(^(?:and\s+)?v[1-9]\b[^;]*?\bwere\s+(?:all\s+|both\s+)?(?:\w+\s+)?(stopped|stationary|waiting|queued|slowing)\b)");
+    static const regex kBareItem(R"(^(?:[\w ]{0,30}:\s*)?v[1-9]\s*,)");
+    static const regex kVerb(R"(\b(?:was|were|is|are|had|has|stopped|slowed|traveled|travelled|struck|turned)\b)");
+    for (size_t i = 1; i < sentences.size(); ++i) {
+      const Sentence& s = sentences[i];
+      smatch m;
+      if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kStateAfterList)) continue;
+      size_t j = i;
+      while (j > 0 && !sentences[j - 1].refs.empty() && Has(sentences[j - 1].text, kBareItem) &&
+             !Has(sentences[j - 1].text, kVerb)) {
+        --j;
+      }
+      if (j == i) continue;  // one vehicle: its own sentence says it
+      for (size_t k = j; k <= i; ++k) {
+        for (const Ref& ref : sentences[k].refs) {
+          if (k == i && ref.pos >= static_cast<size_t>(m.position(1))) continue;
+          if (ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
+          (m[1].str() == "slowing" ? statement[static_cast<size_t>(ref.vehicle)].slowing
+                                   : statement[static_cast<size_t>(ref.vehicle)].stopped) = true;
+        }
+      }
+    }
   }
   // "When the signal turned green, both vehicles began to move forward":
   // what the vehicles did together before the impact is each one's.

@@ -4297,5 +4297,14 @@ TEST(NarrativeExtractorTest, TheLimitAtTheCrashIsTheReducedOneAndTheSideRoadsFor
                         "grandson in the back seat. V2 was westbound and struck the left side of V1."),
               45.0, 1e-6);
 }
+TEST(NarrativeExtractorTest, AQueueListedBeforeItsStateIsAllInThatState) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Traffic was stopped in the right lane for a work zone. From front to back: V4, a 2006 Honda Odyssey; V3, a "
+      "2004 Chevrolet Malibu; and V2, a 2005 Toyota Camry, were all stopped in the right lane. V1, a pickup, "
+      "approached in the right lane and its front struck the rear of the Camry.");
+  ASSERT_EQ(r.vehicles.size(), 4u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  for (size_t i = 1; i < 4; ++i) EXPECT_EQ(r.vehicles[i].pre_event.value, Movement::kStopped) << "V" << i + 1;
+}
 }  // namespace
 }  // namespace accsim
