@@ -673,7 +673,10 @@ void LocateCrash(Reading& rd) {
         // go straight across at the ramp terminal".)
         R"(\b(?:occurred|happened|took place|collided|crashed)\s+(?:[^.;]{0,40}?\s)?at\s+the\s+(?:(?:[\w-]+\s+){0,2}?ramp\s+terminal|(?:terminal|terminus)\s+of\s+(?:the|an?)\s+(?:[\w-]+\s+){0,3}?ramp)\b|\bramp\s+(?:forms|creates|makes)\s+(?:a|an)\s+(?:[\w-]+\s+)?(?:intersection|junction)\b)");
     static const regex kAtIntersection(
-        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)" + WhereRoadsMeet());
+        R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)"
+        // A vehicle held by the signal ("stopped at a red arrow in the
+        // left-turn lane") is in the junction's queue.
+        R"(\b(?:stopped|waiting|stopping|sitting|queued)\s+(?:\w+\s+){0,2}?(?:at|for)\s+(?:a|an|the)\s+(?:steady\s+)?(?:red|yellow|amber)\s+(?:(?:left[- ]turn|right[- ]turn|turn)\s+)?(?:light|signal|arrow|indication|phase)\b|)" + WhereRoadsMeet());
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").

@@ -4306,5 +4306,15 @@ TEST(NarrativeExtractorTest, AQueueListedBeforeItsStateIsAllInThatState) {
   EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
   for (size_t i = 1; i < 4; ++i) EXPECT_EQ(r.vehicles[i].pre_event.value, Movement::kStopped) << "V" << i + 1;
 }
+TEST(NarrativeExtractorTest, ARearEndOfAVehicleHeldByTheSignalIsAtTheJunction) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 2004 Ford Focus, rear-ended V2, a 2006 Toyota Camry, which was stopped at a red arrow in the southbound "
+      "left-turn lane of a seven-lane arterial. Posted 45 mph; straight, level, dry.");
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+  const AccidentRecord s = kExtractor.Extract(
+      "V1, a 2004 Ford Focus, rear-ended V2, a 2006 Toyota Camry, which was stopped in traffic in the right lane of a "
+      "four-lane highway. Posted 45 mph; straight, level, dry.");
+  EXPECT_EQ(s.crash.location.value, CrashLocation::kSegment);
+}
 }  // namespace
 }  // namespace accsim
