@@ -186,6 +186,15 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_bd", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.92},
         {"collision_location", 0.97}, {"driving_actions", 0.80}, {"crash_type", 0.89}}},
+      {"nmvccs_style_bf", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
+        {"collision_location", 0.97}, {"driving_actions", 0.83}, {"crash_type", 0.95}}},
+      // (Lane count 0.75: the ramp's lanes for a vehicle at the ramp's
+      // terminal, and turn lanes on divided arterials, are read as the
+      // arterial's through lanes.)
+      {"nmvccs_style_bg", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.75},
+        {"collision_location", 0.92}, {"driving_actions", 0.82}, {"crash_type", 0.87}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -208,7 +217,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
   for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v", "ciren_style_z",
                           "ciren_style_ab", "ciren_style_ad", "ciren_style_af",
                           "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar",
-                          "ciren_style_av", "ciren_style_ay", "ciren_style_bb", "ciren_style_be"}) {
+                          "ciren_style_av", "ciren_style_ay", "ciren_style_bb", "ciren_style_be", "ciren_style_bh"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});
@@ -216,6 +225,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
     auto own = floors;
     if (std::string(dir) == "ciren_style_k") own["driving_actions"] = 0.60;
     if (std::string(dir) == "ciren_style_ab") own["lane_count"] = 0.92;
+    if (std::string(dir) == "ciren_style_bh") own["driving_actions"] = 0.83;  // a pass and a lane change coded as the manoeuvre
     ExpectAtLeast(s, own);
   }
 }
