@@ -131,7 +131,7 @@ void ReadContact(Reading& rd) {
     const string& s = sentences[impact].text;
     smatch vm;
     std::regex_search(s, vm, ContactVerb());
-    const size_t verb_pos = vm.empty() ? s.size() : static_cast<size_t>(vm.position());
+    const size_t verb_pos = vm.empty() ? s.size() : static_cast<size_t>(vm.position(1));
     static const regex kPassive(
         R"(\b(?:was|were|is|been|being|got|get|gets)\s+(?:\w+\s+)?(?:contacted|struck|impacted|hit|rear[- ]ended|sideswiped|t-?boned|broadsided)\b)");
     const bool passive = Has(s.substr(0, std::min(s.size(), verb_pos + 20)), kPassive);

@@ -237,7 +237,7 @@ void FindImpact(Reading& rd) {
       // contact.)
       static const regex kPairBefore(R"(\bv([1-9])\s+and\s+(?:the\s+)?v([1-9])\s+(?:\w+\s+)?$)");
       smatch pm;
-      const string before_verb = s.text.substr(0, static_cast<size_t>(vm.position()));
+      const string before_verb = s.text.substr(0, static_cast<size_t>(vm.position(1)));
       const bool pair_named = std::regex_search(before_verb, pm, kPairBefore);
       auto retells_pair = [&](const Sentence& next) {
         if (!pair_named) return true;

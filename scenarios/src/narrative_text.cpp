@@ -688,8 +688,9 @@ string Detail(const AreaWords& a) {
 }
 
 const regex& ContactVerb() {
+  // (Not a compound's tail: "pre-impact skid marks", "post-impact travel".)
   static const regex kContact(
-      R"(\b(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged|(?:rolled|crept|creep|creeping|coasted|moved)\s+(?:forward\s+|ahead\s+|back(?:ward)?\s+)?into(?=\s+(?:the\s+)?v[1-9]'s\s+(?:rear|back|front|side|left|right|bumper)))\b)");
+      R"((?:^|[^\w-])(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged|(?:rolled|crept|creep|creeping|coasted|moved)\s+(?:forward\s+|ahead\s+|back(?:ward)?\s+)?into(?=\s+(?:the\s+)?v[1-9]'s\s+(?:rear|back|front|side|left|right|bumper)))\b)");
   return kContact;
 }
 

@@ -4316,5 +4316,12 @@ TEST(NarrativeExtractorTest, ARearEndOfAVehicleHeldByTheSignalIsAtTheJunction) {
       "four-lane highway. Posted 45 mph; straight, level, dry.");
   EXPECT_EQ(s.crash.location.value, CrashLocation::kSegment);
 }
+TEST(NarrativeExtractorTest, PreImpactSkidMarksAreNoContact) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was eastbound, following V2. V2 was slowing to turn right into a driveway. She braked hard and steered "
+      "left, and 18 meters of pre-impact skid marks were documented, but the front of V1 struck the back of V2.");
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+}
 }  // namespace
 }  // namespace accsim
