@@ -47,7 +47,7 @@ void ReadDescriptions(Reading& rd) {
   std::map<int, string>& descriptions = rd.descriptions;
   std::map<int, string>& bodies = rd.bodies;
   static const regex kDesc(
-      R"(^v([1-9])\s*(?:,\s*|\s+-{1,2}\s+|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|hauling|carrying|operating|serving|used|loaded|laden|returning|owned|registered|belonging|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
+      R"(^v([1-9])\s*(?:,\s*|\s+-{1,2}\s+|\s+(?:was|is)\s+|\s+\(\s*)(?:(?:was|is)\s+)?(?:an?\s+|the\s+(?=(?:19|20)\d\d\s)|(?=(?:19|20)\d\d\s))((?:(?:19|20)\d\d\s+)?[a-z][^,;()]{1,60}?)(?=\s*[,;()]|\s+(?:was|were|is|that|which|who|driven|operated|travel\w*|going|heading|headed|approach\w*|and|with|in|on|at|stopped|making|attempting|pulling|towing|hauling|carrying|operating|serving|used|loaded|laden|returning|owned|registered|belonging|exiting|leaving|entering|negotiating|proceeding|driving|designated|behind|ahead|parked)\b|\s*$))");
   static const regex kBody(R"(^\s*,\s*([a-z0-9][a-z0-9 -]{1,40}?)\s+(?:was|that|which|were)\b)");
   for (const Sentence& s : sentences) {
     for (const Ref& ref : RefsIn(s.text)) {

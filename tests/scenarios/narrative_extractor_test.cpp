@@ -4323,5 +4323,16 @@ TEST(NarrativeExtractorTest, PreImpactSkidMarksAreNoContact) {
   EXPECT_EQ(r.crash.striking.value, "V1");
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
 }
+TEST(NarrativeExtractorTest, AVehicleDescribedWithTheArticleKeepsItsName) {
+  // "V1, the 2002 Lincoln Town Car," names V1 as "the Lincoln" later on.
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, the 2002 Lincoln Town Car, was in lane one and turned sharply left to make a U-turn. V2, the 2007 Honda "
+      "Accord, was in lane two coming up on its left at about 30 mph. The Accord driver locked up the brakes and hit "
+      "the Lincoln's left front door with its front.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
+}
 }  // namespace
 }  // namespace accsim
