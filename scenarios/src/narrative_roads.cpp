@@ -1713,8 +1713,9 @@ const string& WhereRoadsMeet() {
 
 // "exiting a parking lot driveway", "at the parking lot exit".
 bool LeavesDriveway(const string& t) {
+  // (Also "pulled out of a bank's two-lane, two-way exit driveway".)
   static const regex kFromDriveway(
-      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:\w+ ){0,2}?(?:parking lot|driveway|private drive|alley|plaza|shopping center|mall|gas station|service station|garage|parking deck|parking structure|field|pasture|farm lane|field access|field entrance)\b|\b(?:parking lot|garage) (?:exit|driveway)\b|)"
+      R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:[\w'-]+,? ){0,4}?(?:parking lot|driveway|private drive|alley|plaza|shopping center|mall|gas station|service station|garage|parking deck|parking structure|field|pasture|farm lane|field access|field entrance)\b|\b(?:parking lot|garage) (?:exit|driveway)\b|)"
       // "stopped at the mouth of the driveway", "drove south through the exit driveway".
       R"(\b(?:stopped|waiting|sitting|sat|paused|idling|was|were|emerged|emerging)\s+(?:[\w-]+\s+){0,2}?(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"
       R"(\b(?:through|down|out) (?:a|an|the) (?:[\w-]+ ){0,2}?(?:driveway|alley)\b|)"

@@ -4334,5 +4334,17 @@ TEST(NarrativeExtractorTest, AVehicleDescribedWithTheArticleKeepsItsName) {
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
   EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);
 }
+TEST(NarrativeExtractorTest, ACarCrossingFromADriveThroughStoppedLanesStrikesAtAnAngle) {
+  // The lanes it eased across are not its direction; the bank's drive is a drive.
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle #2 pulled out of a bank's two-lane, two-way exit driveway on the south side of a four-lane road "
+      "intending to drive straight across. Eastbound traffic in both near lanes was stopped. The driver of Vehicle "
+      "#2 eased across the stopped eastbound lanes and into the westbound lanes, where the front of her vehicle "
+      "struck the left side of Vehicle #1, a pickup traveling west in lane two.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_NE(r.vehicles[1].travel.value, Compass::kEast);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kDriveway);
+}
 }  // namespace
 }  // namespace accsim
