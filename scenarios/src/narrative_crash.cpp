@@ -274,6 +274,14 @@ void ReadContact(Reading& rd) {
     // "the front of v2 struck its left side".
     static const regex kStruckIts(R"(\b(?:contacted|struck|impacted|hit|sideswiped|striking|hitting)\s+(?:its|their)\s+)" + kArea);
     if (!passive && std::regex_search(s, am, kStruckIts)) note(struck, am[1].str());
+    // "the front of v1 struck the right side of the other vehicle": of two,
+    // the other is the one struck.
+    static const regex kOfTheOther(
+        R"(\b(?:contacted|struck|impacted|hit|sideswiped|striking|hitting)\s+the\s+)" + kArea +
+        R"(\s+of\s+the\s+other\s+(?:vehicle|car|truck)\b)");
+    if (!passive && striker > 0 && struck > 0 && r.vehicles.size() == 2 && std::regex_search(s, am, kOfTheOther)) {
+      note(struck, am[1].str());
+    }
     if (std::regex_search(s, am, kItsArea)) note(passive ? struck : striker, am[1].str());
     static const regex kFrontToFront(R"(\bfront[- ]to[- ]front\b)");
     static const regex kFrontToRear(R"(\bfront[- ]to[- ](?:rear|back)\b)");

@@ -4346,5 +4346,15 @@ TEST(NarrativeExtractorTest, ACarCrossingFromADriveThroughStoppedLanesStrikesAtA
   EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
   EXPECT_EQ(r.crash.location.value, CrashLocation::kDriveway);
 }
+TEST(NarrativeExtractorTest, TheSideOfTheOtherVehicleIsTheStruckVehiclesSide) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling south in the right southbound lane of a divided interstate. V2 was traveling north. The "
+      "driver of V2 lost control, crossed the median and entered the southbound lanes traveling sideways. The driver "
+      "of V1 braked but the front of V1 struck the right side of the other vehicle.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.struck.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeOpposite);
+}
 }  // namespace
 }  // namespace accsim
