@@ -492,7 +492,7 @@ void SplitSegments(Reading& rd) {
       // ("v2 was a tractor-trailer. location is a divided highway: 2
       // eastbound lanes and 2 westbound lanes").
       static const regex kSceneSubject(
-          R"(^\s*(?:(?:the\s+)?(?:crash\s+)?location\b|the\s+(?:posted\s+)?speed limit\b|the\s+(?:\w+\s+){0,2}?(?:road|roadway|highway|street|intersection|trafficway)\s+(?:was|is|has|had|runs|ran|curves|curved)\b|(?:the\s+)?(?:weather|sky|pavement|surface|road surface)\s+(?:was|is|were)\b))");
+          R"(^\s*(?:(?:the\s+)?(?:crash\s+)?location\b|the\s+(?:posted\s+)?speed limit\b|the\s+(?:\w+\s+){0,2}?(?:road|roadway|highway|street|intersection|trafficway|avenue|boulevard|arterial|freeway|interstate|expressway|parkway)\s+(?:was|is|has|had|runs|ran|curves|curved)\b|(?:the\s+)?(?:weather|sky|pavement|surface|road surface)\s+(?:was|is|were)\b))");
       const bool scene = s.refs.empty() && Has(s.text, kSceneSubject);
       if (owner > 0 && !scene) segments.push_back({owner, i, cut(0, first)});
     }

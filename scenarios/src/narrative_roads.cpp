@@ -1713,8 +1713,10 @@ const string& WhereRoadsMeet() {
 
 // "exiting a parking lot driveway", "at the parking lot exit".
 bool LeavesDriveway(const string& t) {
-  // (Also "pulled out of a bank's two-lane, two-way exit driveway".)
+  // (Also "pulled out of a bank's two-lane, two-way exit driveway", "left
+  // a shopping center", not "left a gap at the driveway".)
   static const regex kFromDriveway(
+      R"(\bleft (?:a|an|the|his|her) (?:(?!(?:at|of|in|for|to|on|by|near)\b)[\w'-]+ ){0,2}?(?:parking lot|driveway|private drive|plaza|shopping center|mall|gas station|service station|parking garage|parking deck|parking structure)\b|)"
       R"(\b(?:exit\w*|leav\w*|pull\w* out of|out of) (?:a|an|the|his|her) (?:[\w'-]+,? ){0,4}?(?:parking lot|driveway|private drive|alley|plaza|shopping center|mall|gas station|service station|garage|parking deck|parking structure|field|pasture|farm lane|field access|field entrance)\b|\b(?:parking lot|garage) (?:exit|driveway)\b|)"
       // "stopped at the mouth of the driveway", "drove south through the exit driveway".
       R"(\b(?:stopped|waiting|sitting|sat|paused|idling|was|were|emerged|emerging)\s+(?:[\w-]+\s+){0,2}?(?:at|in|from) the (?:mouth|end|exit|edge|apron) of (?:a|an|the) (?:[\w-]+ ){0,2}?(?:parking lot|driveway|private drive|alley)\b|)"

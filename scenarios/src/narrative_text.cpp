@@ -624,9 +624,10 @@ std::optional<Compass> DirectionIn(const string& s) {
     if (m[1].matched && (Has(s.substr(at, 40), kOthersTraffic) || Has(Before(s, at, 40), kWaitedFor))) continue;
     // "pulled out into the westbound lane to pass": the lane it moved into,
     // the other direction's.
-    // (Also "eased across the stopped eastbound lanes".)
+    // (Also "eased across the stopped eastbound lanes", "had crossed the
+    // northbound lanes".)
     static const regex kMovedInto(
-        R"(\b(?:into|onto|across|over)\s+(?:the\s+|both\s+)?(?:(?:stopped|queued|near|far|opposing|other|two|three|both|[1-9])\s+)?$)");
+        R"(\b(?:into|onto|across|over|crossed|crossing|crosses)\s+(?:the\s+|both\s+)?(?:(?:stopped|queued|near|far|opposing|other|two|three|both|[1-9])\s+)?$)");
     if (m[1].matched && Has(s.substr(at, 40), kBoundLane) && Has(Before(s, at, 30), kMovedInto)) continue;
     // Nor the lane the contact was in: "the fronts of v1 and v2 collided in
     // the westbound lane".

@@ -4356,5 +4356,17 @@ TEST(NarrativeExtractorTest, TheSideOfTheOtherVehicleIsTheStruckVehiclesSide) {
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
   EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeOpposite);
 }
+TEST(NarrativeExtractorTest, TheLanesOfTheArterialAndTheLanesCrossedAreNotTheCrossersDirection) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 2005 Chrysler PT Cruiser, left a shopping center on the east side of a five-lane arterial through the "
+      "center's main driveway. The arterial has two northbound lanes, two southbound lanes and a two-way left-turn "
+      "lane. V1 started forward when the light turned green, intending to go straight across. V2, a pickup, was "
+      "southbound in lane two and entered on red. The front of V2 struck the right side of V1 after V1 had crossed "
+      "the northbound lanes and the center lane.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_NE(r.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kSouth);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+}
 }  // namespace
 }  // namespace accsim
