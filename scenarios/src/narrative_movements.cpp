@@ -401,6 +401,21 @@ void ReadVehicles(Reading& rd) {
     bool intended;
   };
   std::vector<CompassTurn> compass_turns;
+  // The other vehicle a coded event speaks of ("other vehicle stopped"): of
+  // two, the other; of more, its partner in the first contact when the
+  // contact names just the two (0: none).
+  std::set<int> first_pair;
+  if (r.vehicles.size() > 2 && rd.impact < sentences.size()) {
+    for (const Ref& ref : sentences[rd.impact].refs) {
+      if (ref.vehicle >= 1 && ref.vehicle < static_cast<int>(narrative.size())) first_pair.insert(ref.vehicle);
+    }
+  }
+  auto coded_partner = [&](size_t vi) -> size_t {
+    if (r.vehicles.size() == 2) return vi == 1 ? 2 : 1;
+    const int v = static_cast<int>(vi);
+    if (first_pair.size() != 2 || !first_pair.count(v)) return 0;
+    return static_cast<size_t>(*first_pair.begin() == v ? *first_pair.rbegin() : *first_pair.begin());
+  };
   for (const Segment& seg : segments) {
     if (seg.vehicle < 1 || seg.vehicle > static_cast<int>(r.vehicles.size())) continue;
     const size_t vi = static_cast<size_t>(seg.vehicle);
@@ -492,19 +507,8 @@ void ReadVehicles(Reading& rd) {
       ReadMovement(seg.text, statement[vi]);
       note_compass_turns(true);
     } else if (kind == Kind::kCoding) {
-      MovementEvidence* other = nullptr;
-      if (r.vehicles.size() == 2) {
-        other = &narrative[vi == 1 ? 2 : 1];
-      } else if (rd.impact < sentences.size()) {
-        // More vehicles: the other one is its partner in the first contact
-        // when the contact names just the two.
-        std::set<int> pair;
-        for (const Ref& ref : sentences[rd.impact].refs)
-          if (ref.vehicle >= 1 && ref.vehicle < static_cast<int>(narrative.size())) pair.insert(ref.vehicle);
-        if (pair.size() == 2 && pair.count(static_cast<int>(vi)))
-          other = &narrative[static_cast<size_t>(*pair.begin() == static_cast<int>(vi) ? *pair.rbegin() : *pair.begin())];
-      }
-      ReadCoding(seg.text, narrative[vi], other);
+      const size_t partner = coded_partner(vi);
+      ReadCoding(seg.text, narrative[vi], partner > 0 ? &narrative[partner] : nullptr);
     }
   }
   // "4 passenger vehicles were stopped in the right lane: v5, ..., then v4,
@@ -514,19 +518,21 @@ void ReadVehicles(Reading& rd) {
         R"(\b(?:\d|all|the|several)\s+(?:\w+\s+)?(?:vehicles|cars)\s+were\s+(?:\w+\s+)?(stopped|stationary|waiting|queued|slowing)\b[^:]*:)");
     // The list may run on over ";"-separated items ("; then v4, a sienna").
     static const regex kListItem(R"(^(?:then|and|followed by)?\s*v[1-9]\b)");
+    // Every vehicle named in [from, until) of a sentence is in the state.
+    auto mark = [&](const Sentence& t, size_t from, size_t until, const string& state) {
+      for (const Ref& ref : t.refs) {
+        if (ref.pos < from || ref.pos >= until || ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
+        MovementEvidence& e = statement[static_cast<size_t>(ref.vehicle)];
+        (state == "slowing" ? e.slowing : e.stopped) = true;
+      }
+    };
+    constexpr size_t kAll = string::npos;
     for (size_t i = 0; i < sentences.size(); ++i) {
       const Sentence& s = sentences[i];
       smatch m;
       if ((s.kind != Kind::kNarrative && s.kind != Kind::kStatement) || !std::regex_search(s.text, m, kListState)) continue;
-      auto mark = [&](const Sentence& t, size_t from) {
-        for (const Ref& ref : t.refs) {
-          if (ref.pos < from || ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
-          (m[1].str() == "slowing" ? statement[static_cast<size_t>(ref.vehicle)].slowing
-                                   : statement[static_cast<size_t>(ref.vehicle)].stopped) = true;
-        }
-      };
-      mark(s, static_cast<size_t>(m.position() + m.length()));
-      for (size_t j = i + 1; j < sentences.size() && Has(sentences[j].text, kListItem); ++j) mark(sentences[j], 0);
+      mark(s, static_cast<size_t>(m.position() + m.length()), kAll, m[1].str());
+      for (size_t j = i + 1; j < sentences.size() && Has(sentences[j].text, kListItem); ++j) mark(sentences[j], 0, kAll, m[1].str());
     }
     // ... and with the state after the list ("from front to back: v4, a
     // honda; v3, a malibu; and v2, a camry, were all stopped"): the list's
@@ -545,14 +551,8 @@ void ReadVehicles(Reading& rd) {
         --j;
       }
       if (j == i) continue;  // one vehicle: its own sentence says it
-      for (size_t k = j; k <= i; ++k) {
-        for (const Ref& ref : sentences[k].refs) {
-          if (k == i && ref.pos >= static_cast<size_t>(m.position(1))) continue;
-          if (ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
-          (m[1].str() == "slowing" ? statement[static_cast<size_t>(ref.vehicle)].slowing
-                                   : statement[static_cast<size_t>(ref.vehicle)].stopped) = true;
-        }
-      }
+      for (size_t k = j; k < i; ++k) mark(sentences[k], 0, kAll, m[1].str());
+      mark(s, 0, static_cast<size_t>(m.position(1)), m[1].str());
     }
   }
   // "When the signal turned green, both vehicles began to move forward":

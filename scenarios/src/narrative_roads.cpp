@@ -446,8 +446,8 @@ RoadContext::RoadContext(const Reading& rd) : sentences(rd.sentences), names(Sce
       }
     }
     smatch sm;
-    for (const Sentence& s : sentences) {
-      if (ends && s.kind == Kind::kNarrative && std::regex_search(s.text, sm, kSideRoad)) {
+    for (size_t i = 0; ends && i < sentences.size(); ++i) {
+      if (sentences[i].kind == Kind::kNarrative && std::regex_search(sentences[i].text, sm, kSideRoad)) {
         v1_road = sm[1].str();
         break;
       }
@@ -1438,9 +1438,12 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
   for (const Sentence& s : sentences) {
     if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
     const size_t index = static_cast<size_t>(&s - sentences.data());
-    if (!usual && Has(s.text, kUsual)) usual = std::make_pair(limits.size(), index);
-    if (s.text.find("limit") == string::npos && s.text.find("posted") == string::npos &&
-        s.text.find(" zone") == string::npos) {
+    const bool tells_limit = s.text.find("limit") != string::npos || s.text.find("posted") != string::npos ||
+                             s.text.find(" zone") != string::npos;
+    // The latest such sentence that tells a limit ("the weather was normal"
+    // tells none).
+    if (tells_limit && Has(s.text, kUsual)) usual = std::make_pair(limits.size(), index);
+    if (!tells_limit) {
       smatch m;
       if (last_with_limit + 1 == index && std::regex_search(s.text, m, kListedRoadLimit)) {
         const bool kmh = m[3].str() == "kmh";

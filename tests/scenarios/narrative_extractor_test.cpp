@@ -4286,6 +4286,15 @@ TEST(NarrativeExtractorTest, TheLimitAtTheCrashIsTheReducedOneAndTheSideRoadsFor
   EXPECT_NEAR(limit_mph("The normal speed limit is 65 mph; within the posted work zone the limit is reduced to 45 mph "
                         "(72 km/h). V1 was eastbound and struck the back of V2."),
               45.0, 1e-6);
+  // A "normal" told of something else earlier, or between, does not hide
+  // the normal limit the reduction replaces.
+  EXPECT_NEAR(limit_mph("Traffic was normal for a weekday. It was dark and the road was dry. The normal speed limit "
+                        "is 65 mph. Within the work zone the limit is reduced to 45 mph. V1 was eastbound and struck "
+                        "the back of V2."),
+              45.0, 1e-6);
+  EXPECT_NEAR(limit_mph("The normal speed limit is 65 mph. Traffic was normal at the time. Within the work zone the "
+                        "limit is reduced to 45 mph. V1 was eastbound and struck the back of V2."),
+              45.0, 1e-6);
   // V1's street ends at the arterial: it is "the side street".
   EXPECT_NEAR(limit_mph("V1 was southbound on a two-lane residential street that ends in a T-intersection with a "
                         "divided arterial. The arterial is posted 55 mph; the side street, 25 mph. V1 stopped at the "
