@@ -251,13 +251,22 @@ void ReadContact(Reading& rd) {
       note(std::stoi(bm[2].str()), bm[1].str());
       note(std::stoi(bm[3].str()), bm[1].str());
     }
+    // Tires that left marks are evidence, not a contact ("braked hard (14
+    // meters of skid marks were measured from v1's rear tires), and struck
+    // the rear of v2").
+    static const regex kMarks(R"(\b(?:marks?|skid\w*|tracks?|furrows?|gouges?)\b)");
+    static const regex kTireWords(R"(\b(?:tires?|wheels?)\b)");
+    auto marks_left_by = [&](const string& part, const smatch& m, size_t area_group) {
+      const size_t pos = static_cast<size_t>(m.position(0));
+      return Has(m[area_group].str(), kTireWords) && Has(Before(part, pos, 60), kMarks);
+    };
     for (const string* part_of : {&contact_clause, &s}) {
       const string& part = *part_of;
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kOfV); it != std::sregex_iterator(); ++it) {
-        note(std::stoi((*it)[2].str()), (*it)[1].str());
+        if (!marks_left_by(part, *it, 1)) note(std::stoi((*it)[2].str()), (*it)[1].str());
       }
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kVs); it != std::sregex_iterator(); ++it) {
-        note(std::stoi((*it)[1].str()), (*it)[2].str());
+        if (!marks_left_by(part, *it, 2)) note(std::stoi((*it)[1].str()), (*it)[2].str());
       }
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kVOn); it != std::sregex_iterator(); ++it) {
         note(std::stoi((*it)[1].str()), (*it)[2].str());

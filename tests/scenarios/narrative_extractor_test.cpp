@@ -4365,6 +4365,21 @@ TEST(NarrativeExtractorTest, TheSideOfTheOtherVehicleIsTheStruckVehiclesSide) {
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
   EXPECT_EQ(r.crash.type.value, CrashType::kSideswipeOpposite);
 }
+TEST(NarrativeExtractorTest, TiresThatLeftMarksAreNotTheStrikersContactArea) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle #2, a 2005 Honda CR-V, was stopped in lane one for a red signal. Vehicle #1, a 2003 International box "
+      "truck, was westbound in lane one. Its driver looked up, braked hard (about 14 meters of skid marks were "
+      "measured from the truck's rear tires), and struck the rear of the CR-V.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.striking_area.value, DamageArea::kFront);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRear);
+  // A tire named as the part struck is still a contact area.
+  const AccidentRecord t = kExtractor.Extract(
+      "V1 was eastbound and V2 was northbound. V1 ran the red light and struck V2's left front tire.");
+  EXPECT_EQ(t.crash.struck_area.value, DamageArea::kLeft);
+}
 TEST(NarrativeExtractorTest, TheLanesOfTheArterialAndTheLanesCrossedAreNotTheCrossersDirection) {
   const AccidentRecord r = kExtractor.Extract(
       "V1, a 2005 Chrysler PT Cruiser, left a shopping center on the east side of a five-lane arterial through the "
