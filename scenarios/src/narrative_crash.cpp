@@ -693,7 +693,11 @@ void LocateCrash(Reading& rd) {
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)"
         // A vehicle held by the signal ("stopped at a red arrow in the
         // left-turn lane") is in the junction's queue.
-        R"(\b(?:stopped|waiting|stopping|sitting|queued)\s+(?:\w+\s+){0,2}?(?:at|for)\s+(?:a|an|the)\s+(?:steady\s+)?(?:red|yellow|amber)\s+(?:(?:left[- ]turn|right[- ]turn|turn)\s+)?(?:light|signal|arrow|indication|phase)\b|)" + WhereRoadsMeet());
+        R"(\b(?:stopped|waiting|stopping|sitting|queued)\s+(?:\w+\s+){0,2}?(?:at|for)\s+(?:a|an|the)\s+(?:steady\s+)?(?:red|yellow|amber)\s+(?:(?:left[- ]turn|right[- ]turn|turn)\s+)?(?:light|signal|arrow|indication|phase)\b|)"
+        // So is a turn made at one ("turning left at a green light", "a left
+        // turn on the green arrow", "turned right at the stop sign").
+        R"(\b(?:turn\w*\s+(?:left|right)|(?:left|right)[- ]turn)\s+(?:at|on)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:light|signal|arrow|stop sign)\b|)" +
+        WhereRoadsMeet());
     // A vehicle leaving a driveway or lot puts the crash at its access, even
     // where the drive forms a leg of an intersection (NASS "driveway, alley
     // access").
@@ -747,6 +751,12 @@ void LocateCrash(Reading& rd) {
     }
     if (r.crash.location.value == CrashLocation::kDriveway && r.road.kind.value == RoadKind::kStraight) {
       r.road.kind.Set(RoadKind::kDriveway, Provenance::kInferred);
+    }
+    // A crash at a junction no sentence names ("ran the red light and struck
+    // the left side of vehicle b"): the roads cross there.
+    if (r.crash.location.value == CrashLocation::kJunction && r.road.kind.value == RoadKind::kStraight &&
+        !r.road.kind.known()) {
+      r.road.kind.Set(RoadKind::kIntersection, Provenance::kInferred);
     }
     // "where a one-lane entrance ramp joins the eastbound lanes": the
     // roads meet at the ramp's merge, not at an intersection.

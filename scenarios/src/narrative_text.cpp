@@ -152,6 +152,26 @@ string Normalise(std::string_view in) {
   static const regex kVehicle(
       R"(\b(?:vehicle|veh\.?|unit|v|car|auto|driver)\s*(?:number\s*|no\.\s*|#\s*|-\s*)?([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kVehicle, "v$1");
+  // Lettered vehicles ("car a ran the stop sign and t-boned car b", "vehicle
+  // a", "unit b"): a to d are v1 to v4 when the text letters at least two
+  // with the same noun ("drove the car a short way" letters none).
+  static const regex kLettered(R"(\b(vehicle|car|unit|auto|truck|driver)\s+([a-d])\b(?!-))");
+  {
+    std::map<string, std::set<char>> letters;
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), kLettered); it != std::sregex_iterator(); ++it) {
+      letters[(*it)[1].str()].insert((*it)[2].str()[0]);
+    }
+    std::set<string> lettering;
+    for (const auto& [noun, used] : letters) {
+      if (used.count('a') && used.count('b')) lettering.insert(noun);
+    }
+    if (!lettering.empty()) {
+      s = ReplaceWith(s, kLettered, [&](const smatch& m) {
+        if (!lettering.count(m[1].str())) return m[0].str();
+        return "v" + std::to_string(m[2].str()[0] - 'a' + 1);
+      });
+    }
+  }
   // Several vehicles named at once: "vehicles 3 and 4", "vehicles #2, #3 and
   // #4" are "v3 and v4", each a reference of its own.
   static const regex kVehicles(R"(\bvehicles\s*#?\s*([1-9])((?:\s*,\s*#?\s*[1-9])*)\s*,?\s*(?:and|&)\s*#?\s*([1-9])\b)" + kNotAUnit);

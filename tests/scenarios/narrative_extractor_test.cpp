@@ -691,6 +691,31 @@ TEST(NarrativeExtractorTest, UnitAndDriverShorthandNameTheVehicles) {
   EXPECT_EQ(r.crash.type.value, CrashType::kRearEnd);
 }
 
+TEST(NarrativeExtractorTest, LetteredVehiclesAndAJunctionToldOnlyByItsSignal) {
+  // "Vehicle A", "car B": lettered in order.
+  const auto r = kExtractor.Extract(
+      "Vehicle A was northbound and Vehicle B was eastbound. Vehicle A ran the red light and struck the left side of "
+      "Vehicle B.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(r.vehicles[1].travel.value, Compass::kEast);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
+  EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
+  // No sentence names the intersection: the red light places the crash at
+  // one, and the roads cross there.
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+  EXPECT_EQ(r.road.kind.value, RoadKind::kIntersection);
+  // A letter without a second one is a word: one vehicle.
+  EXPECT_EQ(kExtractor.Extract("He drove the car a short distance and struck a tree.").participant_count.value, 1);
+  // A turn made at a green light is a turn at a junction.
+  const auto t =
+      kExtractor.Extract("I was turning left at a green light when an oncoming SUV hit my passenger side.");
+  EXPECT_EQ(t.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(t.crash.location.value, CrashLocation::kJunction);
+  EXPECT_EQ(t.road.kind.value, RoadKind::kIntersection);
+}
+
 TEST(NarrativeExtractorTest, PoliceAbbreviationsForDirectionLanesAndIntersection) {
   const auto r = kExtractor.Extract(
       "V1 WAS NB ON A 4 LN UNDIVIDED RDWY, POSTED 40 MPH. V2 WAS EB ON BIRCH ST. FRONT OF V2 STRUCK LEFT SIDE OF "
