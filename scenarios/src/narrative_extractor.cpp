@@ -172,6 +172,17 @@ void ClassifySentences(Reading& rd) {
     s.refs = RefsIn(s.text);
     for (const Ref& ref : s.refs) max_v = std::max(max_v, ref.vehicle);
   }
+  // Of two vehicles, "the two collided front to front", "both vehicles then
+  // collided", "the cars came together": the pair, named in order.
+  if (max_v == 2) {
+    static const regex kThePair(
+        R"(\b(?:the\s+(?:two|2)(?:\s+(?:vehicles|cars|trucks))?|both\s+(?:vehicles|cars)|the\s+(?:vehicles|cars))\s+(?=(?:then\s+|subsequently\s+|eventually\s+|ultimately\s+)?(?:collided|impacted each other|struck each other|made contact|came together)\b))");
+    for (Sentence& s : sentences) {
+      if (s.kind == Kind::kCoding || !Has(s.text, kThePair)) continue;
+      s.text = std::regex_replace(s.text, kThePair, "v1 and v2 ");
+      s.refs = RefsIn(s.text);
+    }
+  }
   rd.quotes_coding =
       std::any_of(sentences.begin(), sentences.end(), [](const Sentence& s) { return s.kind == Kind::kCoding; });
 }

@@ -68,7 +68,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kNoStop(
       R"(\b(?:failed to|did not|didn't|had not|hadn't|never|without|not able to|unable to|could not|couldn't|too late to)\s+(?:\w+\s+){0,3}?stop(?:ping)?\b|\b(?:did not|didn't|failed to|never|without|not)\s+(?:come|coming|came)\s+to\s+a\s+(?:complete\s+|full\s+)?stop\b|\b(?:had not|hadn't|never|not)\s+(?:fully\s+|completely\s+|yet\s+|even\s+)?stopped\b|\bran (?:the|a|through the) (?:stop|red)\b)");
   static const regex kLeavingParking(
-      R"(\b(?:coming|pull|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:parking (?:spot|space|position|place)|parked position)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
+      R"(\b(?:coming|pull|pulling|pulled|leaving|left|exiting)\s+(?:out\s+)?(?:of|from)\s+(?:a|the|his|her)?\s*(?:(?:parallel|diagonal|angled?|curbside|metered)\s+)?(?:parking (?:spot|space|position|place)|parked position)|)"
+      // "came out from the curb", "pulled away from the curb".
+      R"(\b(?:came|come|coming|pull|pulling|pulled|eased|easing|started|starting|moved|moving)\s+(?:out\s+|away\s+)(?:from\s+)?(?:the|a)\s+curb\b(?!\s+lane)|\bfrom (?:a|the) parked position|\bwas parked\b.{0,80}\b(?:entered|pulled|began|attempt))");
   // Crossing the road into a drive on its far side is a left turn (traffic keeps right).
   static const regex kLeft(
       R"(\bturn(?:ed|ing|s)?\s+(?:to\s+(?:the\s+)?)?left\b|\bleft[- ]hand turn|\bleft turn\b|\bturn(?:ed|ing)? left|\b(?:made|make|making)\s+a\s+left\s+(?:onto|into)\b|\bu-?\s?turn|\bcross\w*\s+(?:over\s+)?(?:into|to)\s+(?:a|the)\s+(?:\w+\s+){0,2}?(?:driveway|parking lot|lot|alley)\b)");
@@ -662,6 +664,13 @@ void ReadVehicles(Reading& rd) {
   static const regex kCaseSummary(R"(\bcase\s+(?:vehicle|occupant)\b)", std::regex::icase);
   rd.case_summary = std::regex_search(rd.text.begin(), rd.text.end(), kCaseSummary) && !rd.quotes_coding;
   const bool case_summary = rd.case_summary;
+  for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    // A parked car that someone's account has pull out ("the car 'just came
+    // out from the curb'", the other driver said) was leaving its position.
+    if ((narrative[i + 1].parked || statement[i + 1].parked) && statement[i + 1].leaving_parking) {
+      narrative[i + 1].parked = narrative[i + 1].leaving_parking = true;
+    }
+  }
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
     VehicleRecord& v = r.vehicles[i];
     if ((narrative[i + 1].parked || statement[i + 1].parked) && !LeftParking(narrative[i + 1])) {

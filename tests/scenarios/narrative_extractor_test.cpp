@@ -716,6 +716,32 @@ TEST(NarrativeExtractorTest, LetteredVehiclesAndAJunctionToldOnlyByItsSignal) {
   EXPECT_EQ(t.road.kind.value, RoadKind::kIntersection);
 }
 
+TEST(NarrativeExtractorTest, ThePairThatCollidedIsBothVehicles) {
+  for (const char* contact : {"The two collided front to front", "Both vehicles then collided",
+                              "The two vehicles collided"}) {
+    const auto r = kExtractor.Extract(std::string("Vehicle #1, a pickup, was westbound on a two-lane road. Vehicle #2, "
+                                                  "a sedan, was eastbound. ") +
+                                      contact + " in the eastbound lane, head-on. Both drivers were injured.");
+    ASSERT_EQ(r.participant_count.value, 2) << contact;
+    EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn) << contact;
+    EXPECT_EQ(r.crash.striking.value, "V1") << contact;
+    EXPECT_EQ(r.crash.struck.value, "V2") << contact;
+  }
+}
+
+TEST(NarrativeExtractorTest, AParkedCarTheOtherDriverSawPullOutFromTheCurbLeftItsPosition) {
+  const auto r = kExtractor.Extract(
+      "Vehicle 1 (1999 Mercury Grand Marquis) and Vehicle 2 (2005 Dodge Ram van) collided on a downtown street with "
+      "one travel lane in each direction. The Mercury had been parallel-parked along the south curb facing east. The "
+      "van was eastbound in the travel lane. According to the van's driver, the Mercury's turn signal was not on and "
+      "the car \"just came out from the curb\" when he was nearly alongside. The van's right front struck the "
+      "Mercury's left front fender.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_FALSE(r.vehicles[0].parked.value);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 TEST(NarrativeExtractorTest, PoliceAbbreviationsForDirectionLanesAndIntersection) {
   const auto r = kExtractor.Extract(
       "V1 WAS NB ON A 4 LN UNDIVIDED RDWY, POSTED 40 MPH. V2 WAS EB ON BIRCH ST. FRONT OF V2 STRUCK LEFT SIDE OF "
