@@ -302,8 +302,30 @@ void CountParticipants(Reading& rd) {
   const int max_v = rd.max_v;
   const bool unnumbered_other = rd.unnumbered_other;
   const bool unnumbered_parked = rd.unnumbered_parked;
+  // A numbered vehicle that only comes by after the crash took no part in
+  // it ("a third vehicle, a snowplow traveling east about 400 meters behind
+  // v2, stopped and the operator radioed for assistance"): the last numbers,
+  // when the narrative names them only after the impact and never in a
+  // contact, a push, a coded event, damage, a tow or an injury.
+  int counted = max_v;
+  {
+    const std::vector<Sentence>& sentences = rd.sentences;
+    static const regex kTookPart(
+        R"(\b(?:push\w*|propell\w*|forced|shoved|knocked|redirect\w*|deflect\w*|into\s+(?:the\s+)?v[1-9]|damage\w*|towed|injur\w*|transported|hospital\w*|airbags?|driver|occupants?|belted|rest)\b)");
+    while (counted >= 3 && rd.impact < sentences.size()) {
+      bool took_part = false;
+      for (size_t i = 0; i < sentences.size() && !took_part; ++i) {
+        const Sentence& s = sentences[i];
+        const bool named = std::any_of(s.refs.begin(), s.refs.end(), [&](const Ref& ref) { return ref.vehicle == counted; });
+        took_part = named && (i <= rd.impact || s.kind == Kind::kCoding || Has(s.text, ContactVerb()) ||
+                              Has(s.text, kTookPart));
+      }
+      if (took_part) break;
+      --counted;
+    }
+  }
   if (max_v > 0) {
-    r.participant_count.Set(std::max(max_v, unnumbered_other ? 2 : 0), Provenance::kStated);
+    r.participant_count.Set(std::max(counted, unnumbered_other ? 2 : 0), Provenance::kStated);
   } else {
     static const regex kCount(R"(\b([1-9])[- ]vehicle\b|\b([1-9]) vehicles\b)");
     smatch m;
@@ -365,10 +387,52 @@ void SplitSegments(Reading& rd) {
   // Other road users end a vehicle's segment, with the state words in front
   // of them ("recognized slowing or stopped traffic ahead").
   static const regex kOtherVehicle(
-      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|minivans?|sedans?|coupes?|wagons?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\b(?:vehicles|cars|trucks)\s+(?:were|are)\s+(?:\w+\s+)?(?:parked|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist)\b|)"
+      R"(\b(?:slowing|slowed|stopped|stationary|waiting|parked)(?:\s+(?:or|and)\s+\w+)?\s+(?:traffic|vehicles|cars)\b|\b(?:noncontact|uninvolved|non-involved|another|other|oncoming|several|opposing|an?)\s+(?:(?![12]\d{3}\b)[\w-]+\s+){0,2}?(?:vehicles?|cars?|trucks?|pickups?|vans?|minivans?|sedans?|coupes?|wagons?|suvs?|buses|bus|motorcycles?|semis?|tractor-trailers?|traffic|emergency vehicle)\b|\b\d+\s+(?:\w+\s+)?(?:vehicles|cars)\b|\b(?:vehicles|cars|trucks)\s+(?:that\s+were\s+|which\s+were\s+)?(?:parked|stopped|queued|waiting|lined)\b|\b(?:vehicles|cars|trucks)\s+(?:were|are)\s+(?:\w+\s+)?(?:parked|lined)\b|\bthe\s+(?:other\s+|stopped\s+|queued\s+)?(?:vehicles|cars)\b|\btraffic\b(?!\s+(?:signals?|lights?|controls?|control devices?|devices?|lanes?))|\bthe\s+(?:non-?contact\s+)?(?:pickup|bus|school bus|city bus|box truck|dump truck|farm tractor|tractor)\b|\b(?:a|an|the)\s+(?:\w+\s+)?(?:witness|pedestrian|bystander|officer|trooper|deputy|flagger|passenger|cyclist|bicyclist|trucker|motorist|passerby)\b|)"
       // (Not its own passengers: "driven by a 38 year-old female with one
       // passenger was traveling southbound".)
       R"(\b(?:two|three|several|\d+)\s+(?:\w+\s+)?(?:witness(?:es)?|pedestrians|bystanders|officers|troopers|deputies|flaggers|cyclists|bicyclists)\b)");
+  // Whose driver "she" or "he" is, where the report tells one driver's sex
+  // ("v1 ... driven by a 79-year-old female", "the 35-year-old male driver
+  // of v2", "v2's driver, a woman"): 'f' or 'm' per vehicle, 0 when told
+  // both ways.
+  std::map<int, char> sex;
+  {
+    static const string kSex = R"((?:\d+[- ]year[- ]old\s+)?(male|female|man|woman)\b)";
+    static const regex kDrivenBy(R"(\bv([1-9])\b[^.;]{0,80}?\bdriven by (?:a|an)\s+)" + kSex);
+    static const regex kDriverOfIs(R"(\b(?:driver|operator) of v([1-9])\s*,\s*(?:a|an)\s+)" + kSex);
+    static const regex kVsDriverIs(R"(\bv([1-9])'s\s+(?:driver|operator)\s*,\s*(?:a|an)\s+)" + kSex);
+    static const regex kSexDriverOf(R"(\b(?:\d+[- ]year[- ]old\s+)(male|female|man|woman)\s+(?:driver|operator)\s+of\s+v([1-9])\b)");
+    auto note = [&](const string& v, const string& word) {
+      const char c = word[0] == 'f' || word[0] == 'w' ? 'f' : 'm';
+      const int k = std::stoi(v);
+      sex[k] = sex.count(k) && sex[k] != c ? 0 : c;
+    };
+    for (const Sentence& s : sentences) {
+      for (const regex* re : {&kDrivenBy, &kDriverOfIs, &kVsDriverIs}) {
+        for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), *re); it != std::sregex_iterator(); ++it)
+          note((*it)[1].str(), (*it)[2].str());
+      }
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kSexDriverOf); it != std::sregex_iterator(); ++it)
+        note((*it)[2].str(), (*it)[1].str());
+    }
+  }
+  // The one vehicle whose driver a sentence's opening "she"/"he" can be
+  // when the running text is about a vehicle whose driver is not of that
+  // sex (0: keep the focus).
+  auto pronoun_owner = [&](const string& text, int focus_now) {
+    static const regex kOpeningPronoun(R"(^\s*(?:then\s+|later\s+)?(she|he)\b)");
+    smatch pm;
+    if (!std::regex_search(text, pm, kOpeningPronoun)) return 0;
+    const char c = pm[1].str() == "she" ? 'f' : 'm';
+    if (sex.count(focus_now) && sex[focus_now] == c) return 0;
+    int only = 0;
+    for (const auto& [v, x] : sex) {
+      if (x != c) continue;
+      if (only) return 0;
+      only = v;
+    }
+    return only;
+  };
   std::vector<Segment>& segments = rd.segments;
   int focus = 0;  // the vehicle the running text is about
   for (size_t i = 0; i < sentences.size(); ++i) {
@@ -498,7 +562,10 @@ void SplitSegments(Reading& rd) {
     if (first > 0) {
       // Coded sentences name their vehicle first ("the critical precrash
       // event for v1 was ... this vehicle ..."); others continue the focus.
-      const int owner = s.kind == Kind::kCoding && !s.refs.empty() ? s.refs.front().vehicle : focus;
+      int owner = s.kind == Kind::kCoding && !s.refs.empty() ? s.refs.front().vehicle : focus;
+      if (s.kind != Kind::kCoding) {
+        if (const int by_sex = pronoun_owner(s.text, focus); by_sex > 0) owner = focus = by_sex;
+      }
       // A sentence about the scene is no vehicle's, whoever was named last
       // ("v2 was a tractor-trailer. location is a divided highway: 2
       // eastbound lanes and 2 westbound lanes").

@@ -111,7 +111,9 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       // the driver took it.
       R"(\b(?:thought|believed|assumed|figured|guessed)\s+(?:that\s+)?(?:it|the\s+\w+|v[1-9]|she|he|they)\s+(?:was|were|had been)\s+(?:\w+\s+)?parked\b|)"
       // "a landscaping trailer parked at the south curb limited the v2 driver's view".
-      R"(\b(?:a|an|another|the)\s+(?:[\w-]+\s+){0,2}?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|trailers?|sedans?)\s+(?:was\s+)?(?:double-)?parked\b)");
+      R"(\b(?:a|an|another|the)\s+(?:[\w-]+\s+){0,2}?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|trailers?|sedans?)\s+(?:was\s+)?(?:double-)?parked\b|)"
+      // "was passing the parked v2": the state of the vehicle named next.
+      R"(\b(?:the|a)\s+(?:legally\s+|illegally\s+)?parked\s+(?=v[1-9]\b))");
   const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);
   if (parked && !Has(t, kLeavingParking)) e.parked = true;
   if (Has(t, kLeavingParking)) e.leaving_parking = true;

@@ -242,6 +242,15 @@ string Normalise(std::string_view in) {
   static const regex kMakeThenModel(
       R"(\bthe\s+([a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s*\(\s*v([1-9])\s*\)\s*,\s*an?\s+((?:19|20)\d\d)\s+)");
   s = std::regex_replace(s, kMakeThenModel, "v$2, a $3 $1 ");
+  // "the volvo, a 1996 850 sedan (v2), had been parked": numbered after its
+  // description, "v2, a 1996 volvo 850 sedan, had been parked".
+  static const regex kMakeThenDescription(
+      R"(\bthe\s+([a-z][a-z-]+)\s*,\s*an?\s+((?:19|20)\d\d)\s+([^,;().]{1,40}?)\s*\(\s*v([1-9])\s*\))");
+  s = ReplaceWith(s, kMakeThenDescription, [](const smatch& m) {
+    const string make = m[1].str(), rest = m[3].str();
+    const bool named = rest.rfind(make, 0) == 0;  // "the honda, a 2004 honda civic (v2)"
+    return "v" + m[4].str() + ", a " + m[2].str() + " " + (named ? rest : make + " " + rest);
+  });
   // "struck a legally parked, unoccupied 1994 oldsmobile cutlass ciera
   // (v2)": the vehicle with its description and then how it stood, "v2, a
   // 1994 ... ciera, which was legally parked unoccupied,".

@@ -742,6 +742,51 @@ TEST(NarrativeExtractorTest, AParkedCarTheOtherDriverSawPullOutFromTheCurbLeftIt
   EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
 }
 
+TEST(NarrativeExtractorTest, AMakeDescribedBeforeItsNumberAndTheParkedCarAVehiclePasses) {
+  const auto r = kExtractor.Extract(
+      "The Volvo, a 1996 850 sedan (Vehicle 2), had been parallel-parked along the south curb facing east. Its "
+      "driver signaled and pulled out of the space. The Jeep, a 2005 Wrangler (Vehicle 1), was eastbound in the "
+      "travel lane and was passing the parked Volvo. The left front of the Volvo struck the right side of the Jeep.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_FALSE(r.vehicles[0].parked.value);  // the one passing is not the parked one
+  EXPECT_NE(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(r.crash.striking.value, "V2");
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kRight);
+}
+
+TEST(NarrativeExtractorTest, AVehicleThatOnlyComesByAfterTheCrashTookNoPart) {
+  const auto r = kExtractor.Extract(
+      "Vehicle two (V2), a Chevrolet Malibu, was traveling east. Vehicle one (V1), a Ford Ranger, was traveling west "
+      "and lost control on the ice. The front of V1 struck the left side of V2. Both vehicles came to rest in the "
+      "eastbound lane. A third vehicle, a snowplow traveling east about 400 meters behind V2, stopped and the "
+      "operator radioed for assistance. Both vehicles were towed.");
+  EXPECT_EQ(r.participant_count.value, 2);
+  // One pushed into, or damaged, did take part.
+  const auto chain = kExtractor.Extract(
+      "V1 struck the rear of V2, which was stopped in traffic. V2 was then pushed into the rear of V3.");
+  EXPECT_EQ(chain.participant_count.value, 3);
+}
+
+TEST(NarrativeExtractorTest, SheIsTheDriverToldAsAWoman) {
+  const auto r = kExtractor.Extract(
+      "V1, a 1998 Buick LeSabre driven by a 79-year-old female, was exiting the parking lot of a store on the south "
+      "side of an east-west road. She was facing north in the mouth of the driveway intending to turn left. V2, a "
+      "GMC Envoy, was eastbound in the right lane approaching the driveway. A westbound tractor-trailer had slowed "
+      "and flashed its headlights, which the V1 driver interpreted as a signal to proceed. She pulled out across the "
+      "eastbound lanes. The front of V2 struck the left side of V1. The 35-year-old driver of V2 was not injured.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[1].movement.value, Movement::kStraight);
+  // A trucker who stopped after the crash is not the vehicle last named.
+  const auto t = kExtractor.Extract(
+      "Vehicle 1 pulled into the westbound lane to pass a line of traffic. Vehicle 2, a minivan, came over the crest "
+      "westbound. The front of Vehicle 1 struck the front of Vehicle 2. The minivan was driven by a 40-year-old "
+      "female. She said Vehicle 1 came out of nowhere. She was transported. The trucker, who stopped, said Vehicle 1 "
+      "passed on the double yellow.");
+  EXPECT_EQ(t.vehicles[1].pre_event.value, Movement::kStraight);
+}
+
 TEST(NarrativeExtractorTest, PoliceAbbreviationsForDirectionLanesAndIntersection) {
   const auto r = kExtractor.Extract(
       "V1 WAS NB ON A 4 LN UNDIVIDED RDWY, POSTED 40 MPH. V2 WAS EB ON BIRCH ST. FRONT OF V2 STRUCK LEFT SIDE OF "
