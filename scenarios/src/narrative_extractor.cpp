@@ -534,7 +534,9 @@ void SplitSegments(Reading& rd) {
         // at the curb blocked her view, and she pulled out past it", "a box
         // truck blocked his view, and that he "inched out"".
         static const regex kDriverResumes(
-            R"((?:,\s*(?:and|so|but|then)|\b(?:and|then))\s+(?:that\s+)?(?:then\s+)?"?\s*(?:he|she)\s+"?\s*(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b)");
+            R"((?:,\s*(?:and|so|but|then)|\b(?:and|then))\s+(?:that\s+)?(?:then\s+)?"?\s*(?:he|she)\s+"?\s*(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b|)"
+            // "... had blocked her view, and when the van turned she began her turn".
+            R"(,\s*and\s+(?:when|as|after|once)\s+(?:[\w-]+\s+){1,6}?(?:he|she)\s+(?:\w+ly\s+)?(?:was|had|began|started|\w+ed)\b)");
         // So is the next verb of its list after a person it waited for:
         // "stopped at the stop sign, waited for a pedestrian to finish
         // crossing, and then started across".

@@ -787,6 +787,19 @@ TEST(NarrativeExtractorTest, SheIsTheDriverToldAsAWoman) {
   EXPECT_EQ(t.vehicles[1].pre_event.value, Movement::kStraight);
 }
 
+TEST(NarrativeExtractorTest, TheDriversTurnToldAfterAVanThatBlockedHerView) {
+  const auto r = kExtractor.Extract(
+      "Vehicle #1, a 2005 Honda CR-V, was northbound in the inside lane and was stopped at the stop bar waiting to "
+      "turn left onto the side street. Vehicle #2, a 1999 Ford Crown Victoria, was southbound in the inside lane "
+      "approaching the same intersection. The driver of the Honda stated to the researcher that a southbound "
+      "delivery van waiting to turn left had blocked her view, and when the van turned she began her turn believing "
+      "the lanes beyond it were clear. As the Honda crossed the southbound lanes the front of the Ford struck the "
+      "right side of the Honda.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+}
+
 TEST(NarrativeExtractorTest, PoliceAbbreviationsForDirectionLanesAndIntersection) {
   const auto r = kExtractor.Extract(
       "V1 WAS NB ON A 4 LN UNDIVIDED RDWY, POSTED 40 MPH. V2 WAS EB ON BIRCH ST. FRONT OF V2 STRUCK LEFT SIDE OF "
