@@ -195,6 +195,17 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_bg", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.75},
         {"collision_location", 0.92}, {"driving_actions", 0.82}, {"crash_type", 0.87}}},
+      {"nmvccs_style_bi", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.97},
+        {"collision_location", 0.97}, {"driving_actions", 0.87}, {"crash_type", 0.90}}},
+      // (Written to the pre-event movements: its labeller codes lane
+      // changes, passes and merges that are the critical event as the
+      // movement, where the development set codes what came before, and a
+      // pull out of a parallel space as a lane change, where the other sets
+      // code a turn across the path.)
+      {"nmvccs_style_bj", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.92},
+        {"collision_location", 0.87}, {"driving_actions", 0.68}, {"crash_type", 0.70}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -217,7 +228,8 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
   for (const char* dir : {"ciren_style", "ciren_style_k", "ciren_style_p", "ciren_style_r", "ciren_style_v", "ciren_style_z",
                           "ciren_style_ab", "ciren_style_ad", "ciren_style_af",
                           "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar",
-                          "ciren_style_av", "ciren_style_ay", "ciren_style_bb", "ciren_style_be", "ciren_style_bh"}) {
+                          "ciren_style_av", "ciren_style_ay", "ciren_style_bb", "ciren_style_be", "ciren_style_bh",
+                          "ciren_style_bk"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});
