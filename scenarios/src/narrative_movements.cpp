@@ -524,10 +524,11 @@ void ReadVehicles(Reading& rd) {
     static const regex kListItem(R"(^(?:then|and|followed by)?\s*v[1-9]\b)");
     // Every vehicle named in [from, until) of a sentence is in the state.
     auto mark = [&](const Sentence& t, size_t from, size_t until, const string& state) {
+      const bool slowing = state == "slowing";
       for (const Ref& ref : t.refs) {
         if (ref.pos < from || ref.pos >= until || ref.vehicle < 1 || ref.vehicle >= static_cast<int>(statement.size())) continue;
         MovementEvidence& e = statement[static_cast<size_t>(ref.vehicle)];
-        (state == "slowing" ? e.slowing : e.stopped) = true;
+        (slowing ? e.slowing : e.stopped) = true;
       }
     };
     constexpr size_t kAll = string::npos;
@@ -667,14 +668,12 @@ void ReadVehicles(Reading& rd) {
   rd.case_summary = std::regex_search(rd.text.begin(), rd.text.end(), kCaseSummary) && !rd.quotes_coding;
   const bool case_summary = rd.case_summary;
   for (size_t i = 0; i < r.vehicles.size(); ++i) {
+    VehicleRecord& v = r.vehicles[i];
     // A parked car that someone's account has pull out ("the car 'just came
     // out from the curb'", the other driver said) was leaving its position.
     if ((narrative[i + 1].parked || statement[i + 1].parked) && statement[i + 1].leaving_parking) {
       narrative[i + 1].parked = narrative[i + 1].leaving_parking = true;
     }
-  }
-  for (size_t i = 0; i < r.vehicles.size(); ++i) {
-    VehicleRecord& v = r.vehicles[i];
     if ((narrative[i + 1].parked || statement[i + 1].parked) && !LeftParking(narrative[i + 1])) {
       v.parked.Set(true, Provenance::kStated);
     }
