@@ -449,6 +449,22 @@ Numbered NameUnnumberedVehicles(const string& s) {
     static const regex kTheirCar(R"(\b(?:his|her|their)\s+(?:car|vehicle)\b)");
     rebuilt = std::regex_replace(rebuilt, kTheirCar, "v" + std::to_string(motorist));
   }
+  if (next == 1) {
+    // One vehicle that is never introduced ("he was driving his car north
+    // ... and struck a tree", "the driver of the car was westbound when she
+    // ran off the road"): its driver and the car itself are v1.
+    static const regex kOwnVehicle(R"(\b(?:the|his|her|their)\s+((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
+    static const regex kDriverPronoun(R"(\b(?:he|she)\b)");
+    smatch om;
+    if (std::regex_search(rebuilt, om, kOwnVehicle)) {
+      out.descriptions[1] = om[1].str() + om[2].str();
+      // "he was driving v1 north": the driver's verb moves the vehicle.
+      static const regex kDriving(R"(\b(?:he|she|the driver)\s+((?:was\s+)?(?:driving|drove|operating|operated))\s+(?:the|his|her|their)\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\b)");
+      rebuilt = std::regex_replace(rebuilt, kDriving, "v1 was traveling");
+      rebuilt = std::regex_replace(rebuilt, kOwnVehicle, "v1");
+      rebuilt = std::regex_replace(rebuilt, kDriverPronoun, "v1");
+    }
+  }
   out.text = std::move(rebuilt);
   return out;
 }

@@ -517,6 +517,22 @@ TEST(NarrativeExtractorTest, ShortDescriptionsWithoutVehicleNumbers) {
   EXPECT_EQ(side.crash.location.value, CrashLocation::kJunction);
 }
 
+TEST(NarrativeExtractorTest, AShortDescriptionOfOneUnintroducedVehicleNamesItV1) {
+  // Nobody says "a car": the car is told as "his car" or "the car", its
+  // driver as "he" or "she"; both are the one vehicle of the crash.
+  const auto driven = kExtractor.Extract(
+      "He was driving his car north on Main Street when he lost control and struck a tree.");
+  ASSERT_EQ(driven.participant_count.value, 1);
+  EXPECT_EQ(driven.vehicles[0].travel.value, Compass::kNorth);
+  EXPECT_EQ(driven.crash.striking.value, "V1");
+  EXPECT_EQ(driven.crash.type.value, CrashType::kSingleVehicle);
+
+  const auto driver = kExtractor.Extract(
+      "The driver of the car was westbound on Route 5 at night when she ran off the road and hit a utility pole.");
+  EXPECT_EQ(driver.vehicles[0].travel.value, Compass::kWest);
+  EXPECT_EQ(driver.crash.striking.value, "V1");
+}
+
 TEST(NarrativeExtractorTest, AnAreaBelongsToTheNearestVehicle) {
   const auto r = kExtractor.Extract("V1 was driving north. V2 hit V1 on the left side.");
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
