@@ -31,9 +31,13 @@ Reading::Reading(std::string_view given) : text(given) {
                          " bytes; only the start was read");
     text = text.substr(0, NarrativeExtractor::kMaxBytes);
   }
-  Numbered numbered = NameUnnumberedVehicles(Normalise(text));
+  const string normalised = Normalise(text, &numbered_by_report);
+  Numbered numbered = NameUnnumberedVehicles(normalised, numbered_by_report);
   norm = std::move(numbered.text);
   descriptions = std::move(numbered.descriptions);
+  // ACCSIM_DEBUG_TEXT=1 prints the text the rules read: normalised, each
+  // vehicle named vN.
+  if (std::getenv("ACCSIM_DEBUG_TEXT")) std::fprintf(stderr, "%s\n", norm.c_str());
   for (string& t : SplitSentences(norm)) sentences.push_back({std::move(t), Kind::kNarrative, {}, 0});
   impact = sentences.size();
 }
@@ -306,19 +310,53 @@ void CountParticipants(Reading& rd) {
   // it ("a third vehicle, a snowplow traveling east about 400 meters behind
   // v2, stopped and the operator radioed for assistance"): the last numbers,
   // when the narrative names them only after the impact and never in a
-  // contact, a push, a coded event, damage, a tow or an injury.
+  // contact, a push, a coded event, damage, a tow or an injury. A vehicle
+  // the report does not number ("a car that had been following her stopped
+  // and called 911") may be the second; one that "was not struck" took no
+  // part in that sentence.
   int counted = max_v;
   {
     const std::vector<Sentence>& sentences = rd.sentences;
     static const regex kTookPart(
         R"(\b(?:push\w*|propell\w*|forced|shoved|knocked|redirect\w*|deflect\w*|into\s+(?:the\s+)?v[1-9]|damage\w*|towed|injur\w*|transported|hospital\w*|airbags?|driver|occupants?|belted|rest)\b)");
-    while (counted >= 3 && rd.impact < sentences.size()) {
+    static const regex kNoPart(R"(^(?:\s+[\w'()-]+){0,6}?\s+(?:was|were)\s+not\s+(?:struck|hit|involved|damaged|contacted)\b)");
+    const int fewest = rd.numbered_by_report ? 3 : 2;
+    // A crash no numbered vehicle's contact tells ("the left side of the
+    // vehicle struck a ... utility pole") happened at its first contact.
+    size_t impact = rd.impact;
+    for (size_t i = 0; i < sentences.size() && impact == sentences.size(); ++i) {
+      if (sentences[i].kind == Kind::kNarrative && Has(WithoutAvoidedContacts(sentences[i].text), ContactVerb())) impact = i;
+    }
+    // "No other vehicles were involved, and a car that had been following
+    // stopped": from there on, a vehicle the report did not number is a
+    // bystander.
+    size_t no_others = sentences.size();
+    static const regex kNoOthers(R"(\bno other (?:vehicles? (?:was |were )?involved|vehicles? (?:was|were) involved)\b)");
+    for (size_t i = 0; i < sentences.size() && !rd.numbered_by_report; ++i) {
+      if (Has(sentences[i].text, kNoOthers)) {
+        no_others = i;
+        break;
+      }
+    }
+    while (counted >= fewest && impact < sentences.size()) {
       bool took_part = false;
-      for (size_t i = 0; i < sentences.size() && !took_part; ++i) {
+      for (size_t i = 0; i < std::min(no_others, sentences.size()) && !took_part; ++i) {
         const Sentence& s = sentences[i];
-        const bool named = std::any_of(s.refs.begin(), s.refs.end(), [&](const Ref& ref) { return ref.vehicle == counted; });
-        took_part = named && (i <= rd.impact || s.kind == Kind::kCoding || Has(s.text, ContactVerb()) ||
-                              Has(s.text, kTookPart));
+        // Where the report gave no numbers, only the vehicle's own stretch
+        // (from the vehicle named before it to the one named after) tells
+        // what it did: "v2's driver ... could not steer clear because of v3
+        // beside him" is v2's driver's, not v3's.
+        string told;
+        for (size_t k = 0; k < s.refs.size(); ++k) {
+          const Ref& ref = s.refs[k];
+          if (ref.vehicle != counted || Has(s.text.substr(ref.pos + 2), kNoPart)) continue;
+          const size_t begin = k > 0 ? s.refs[k - 1].pos : 0;
+          const size_t end = k + 1 < s.refs.size() ? s.refs[k + 1].pos : s.text.size();
+          told += rd.numbered_by_report ? s.text : s.text.substr(begin, end - begin);
+          told += ' ';
+        }
+        took_part = !told.empty() && (i <= impact || s.kind == Kind::kCoding || Has(told, ContactVerb()) ||
+                                      Has(told, kTookPart));
       }
       if (took_part) break;
       --counted;

@@ -37,16 +37,19 @@ inline constexpr int kMaxVehicles = 9;
 string Before(const string& s, size_t at, size_t n);
 
 // Lower-case ASCII, one space between words, canonical vehicle references
-// ("v2") and numbers ("45").
-string Normalise(std::string_view in);
+// ("v2") and numbers ("45"). numbered_by_report (when given) says whether the
+// report numbers its vehicles itself; "the first car" and "the case vehicle"
+// become v1 too, but leave the other vehicles to be named.
+string Normalise(std::string_view in, bool* numbered_by_report = nullptr);
 
 // Text whose unnumbered vehicles ("a white sedan ... the sedan") are named
-// v1, v2, ... in order of first mention, with their noun phrases.
+// v1, v2, ... in order of first mention, with their noun phrases. Nothing
+// changes in a report that numbers its vehicles.
 struct Numbered {
   string text;
   std::map<int, string> descriptions;
 };
-Numbered NameUnnumberedVehicles(const string& s);
+Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report);
 
 // What a sentence is: the investigator's account, a driver's statement, the
 // quoted NASS coding, or about people (ages, injuries).
@@ -158,6 +161,7 @@ struct Reading {
   std::string_view text;  // as given (up to NarrativeExtractor::kMaxBytes)
   AccidentRecord r;       // what the stages fill in
   string norm;            // normalised, vehicles numbered
+  bool numbered_by_report = false;  // the report's own numbers, not ones given to "a pickup"
   std::vector<Sentence> sentences;
   std::map<int, string> descriptions, bodies;  // "2000 pontiac montana", "minivan"
   int max_v = 0;                               // the highest vehicle number referenced

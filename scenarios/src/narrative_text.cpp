@@ -50,7 +50,7 @@ string Before(const string& s, size_t at, size_t n) { return at > n ? s.substr(a
 // Lower-case ASCII, one space between words; every other byte (binary,
 // UTF-8) becomes a space so the rules only ever see printable text. Vehicle
 // references and numbers get one canonical form ("v2", "45").
-string Normalise(std::string_view in) {
+string Normalise(std::string_view in, bool* numbered_by_report) {
   string s;
   s.reserve(in.size());
   bool space = false;
@@ -188,6 +188,8 @@ string Normalise(std::string_view in) {
   // "the v1 driver told the investigator": the driver of v1.
   static const regex kNumberedDriver(R"(\bthe\s+v([1-9])\s+(driver|operator)\b)");
   s = std::regex_replace(s, kNumberedDriver, "the $2 of v$1");
+  static const regex kNumberedRef(R"(\bv[1-9]\b)");
+  if (numbered_by_report != nullptr) *numbered_by_report = Has(s, kNumberedRef);
   // "the first vehicle", "the 2nd car" (ordinals are digits by now).
   // Not a place in a queue: "the 3rd vehicle in a queue waiting for the light",
   // "the 4th car in the eastbound queue".
@@ -339,50 +341,114 @@ string Normalise(std::string_view in) {
   return s;
 }
 
-// Short descriptions number no vehicle ("a red sedan ran the light and
-// t-boned a white suv", "my car was stopped when a pickup rear-ended me").
-// The narrator's vehicle becomes v1 ("my car", "i", "me"), then each vehicle
-// introduced with "a"/"an"/"another" in order of first mention; a later "the
-// suv" refers back when only one vehicle has that noun. The noun phrases are
-// kept as the vehicles' descriptions.
-Numbered NameUnnumberedVehicles(const string& s) {
-  static const regex kAnyRef(R"(\bv[1-9]\b)");
-  if (Has(s, kAnyRef)) return {s, {}};
+// Reports and descriptions that number no vehicle ("a red sedan ran the
+// light and t-boned a white suv", "my car was stopped when a pickup
+// rear-ended me", "the trailblazer (2007 chevrolet trailblazer) was
+// southbound ... struck a northbound 2004 toyota tundra pickup"). The
+// narrator's vehicle becomes v1 ("my car", "i", "me"); "the first car" and
+// "the case vehicle" keep the numbers they were given; then each vehicle
+// introduced ("a", "an", "another", "the other vehicle, a ...", a make named
+// with its model year in brackets, "someone", "my husband's f-150") takes the
+// next number in order of first mention. A later "the suv", "the tundra",
+// "the truck" refers back when only one vehicle has that word. The noun
+// phrases are kept as the vehicles' descriptions.
+Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
+  if (numbered_by_report) return {s, {}};
   static const string kNoun =
       R"((car|sedan|coupe|hatchback|wagon|suv|jeep|pickup(?: truck)?|truck|van|minivan|motorcycle|motorbike|bus|tractor-trailer|semi|taxi|cab|vehicle))";
+  // Makes, and models no other word is spelled as ("a corolla", "a white
+  // f-150"; not "an escape", "a pilot", "a ranger").
   static const string kMakes =
-      R"((ford|toyota|honda|chevrolet|chevy|nissan|hyundai|kia|subaru|mazda|dodge|volkswagen|vw|bmw|mercedes|audi|lexus|acura|infiniti|buick|cadillac|gmc|chrysler|pontiac|saturn|mitsubishi|volvo|tesla|lincoln|mercury|plymouth|oldsmobile|suzuki|isuzu|saab|mini|fiat|peugeot|renault|vauxhall|skoda|seat|citroen))";
+      R"((ford|toyota|honda|chevrolet|chevy|nissan|hyundai|kia|subaru|mazda|dodge|volkswagen|vw|bmw|mercedes|audi|lexus|acura|infiniti|buick|cadillac|gmc|chrysler|pontiac|saturn|mitsubishi|volvo|tesla|lincoln|mercury|plymouth|oldsmobile|suzuki|isuzu|saab|mini|fiat|peugeot|renault|vauxhall|skoda|seat|citroen|)"
+      R"(corolla|camry|civic|altima|sentra|maxima|f-150|f-250|f-350|silverado|tahoe|taurus|malibu|impala|cruze|cavalier|jetta|passat|prius|rav4|rav-4|cr-v|highlander|tacoma|tundra|4runner|wrangler|cherokee|outback|forester|impreza|elantra|sonata|optima|caravan|odyssey|sienna|camaro|corvette|equinox|trailblazer|durango|windstar|econoline|lesabre|sportage|sorento|murano|xterra|outlander|tiguan|miata|neon|sebring|cobalt|blazer|s-10|escalade|yukon|explorer|mustang))";
   static const string kColour =
       R"((?:(?:(?:dark|light|bright)\s+)?(?:white|black|silver|gray|grey|red|blue|green|gold|maroon|tan|beige|brown|yellow|orange|purple|burgundy)\s+))";
+  static const string kKin =
+      R"((?:husband|wife|son|daughter|mom|mother|dad|father|brother|sister|friend|boyfriend|girlfriend|partner|neighbou?r|coworker|boss|grandmother|grandfather|aunt|uncle|cousin)'s)";
+  // Words that end a vehicle's name: "a 2004 ford taurus was", "... that".
+  static const string kNameEnd =
+      R"((?!was\b|were\b|is\b|that\b|which\b|who\b|and\b|lost\b|left\b|in\b|on\b|at\b|with\b|driven\b|travel\w*|going\b|heading\b|headed\b|had\b|hit\b|struck\b|pulling\b|towing\b|hauling\b|from\b|to\b|into\b|for\b|of\b|as\b|by\b|when\b|while\b|but\b|then\b|ran\b|came\b|crossed\b|turned\b|stopped\b))";
   // Group 1: the phrase without its article (noun included); group 2: the noun.
-  static const regex kMine(R"(\bmy\s+((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
-  // "a red suv", "another car", a model year: "a 2010 honda accord", a make
-  // with its model: "a white ford explorer", "a toyota corolla" (groups 5, 6),
-  // a rider or driver named for the vehicle: "a motorcyclist" (group 7), and,
-  // once the narrator is v1, "the car behind me" (groups 8, 9).
+  static const regex kMine(R"(\bmy\s+(?!)" + kKin + R"()((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
+  // "a red suv", "another car" (groups 1, 2), a model year, after at most
+  // two words ("a northbound 2004 toyota tundra pickup", groups 3, 4), a make
+  // with its model: "a white ford explorer" (groups 5, 6), a rider, driver
+  // or person named for the vehicle: "a motorcyclist", "someone" (group 7),
+  // once the narrator is v1, "the car behind me" (groups 8, 9), a name with
+  // its model year in brackets: "the trailblazer (2007 chevrolet
+  // trailblazer)" (groups 10, 11), and a relative's: "my husband's f-150"
+  // (group 12).
   static const regex kIntro(
       R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
       // (Not a place named for vehicles: "witnesses in a bus shelter".)
-      R"()\b(?!\s+(?:shelter|stop|station|depot|bench|wash|dealership|dealer|lot|garage|repair|shop|park)\b)|\b(?:a|an)\s+((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+(?!was\b|that\b|which\b|who\b|and\b|lost\b|left\b)[a-z][a-z0-9-]*){0,2}))" +
-      R"(|\b(?:a|an)\s+()" + kColour + R"(?)" + kMakes +
-      R"((?:\s+(?!was\b|were\b|that\b|which\b|who\b|and\b|in\b|on\b|at\b|with\b|driven\b|travel\w*|going\b|heading\b|had\b|hit\b|struck\b)[a-z0-9][a-z0-9-]*)?)\b)" +
-      R"(|\b(?:a|an)\s+(motorcyclist|motorist)\b|\bthe\s+(?:other\s+)?()" + kNoun +
-      R"()(?=\s+(?:behind|ahead of|in front of) v1\b))");
+      R"()\b(?!\s+(?:shelter|stop|station|depot|bench|wash|dealership|dealer|lot|garage|repair|shop|park)\b)|\b(?:a|an)\s+(?:(?!a\b|an\b|the\b)[a-z-]+\s+){0,2}?((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+)" +
+      kNameEnd + R"([a-z0-9][a-z0-9-]*){0,3}))" + R"(|\b(?:a|an)\s+()" + kColour + R"(?)" + kMakes + R"((?:\s+)" +
+      kNameEnd + R"([a-z0-9][a-z0-9-]*)?)\b)" +
+      R"(|\b(?:a|an)\s+(motorcyclist|motorist)\b|\b(someone|somebody)\b|\bthe\s+(?:other\s+)?()" + kNoun +
+      R"()(?=\s+(?:behind|ahead of|in front of) v1\b))" +
+      R"(|\bthe\s+([a-z][a-z0-9-]*(?:\s+[a-z][a-z0-9-]*)?)\s*\(\s*((?:19|20)\d\d\s+[a-z][^()]{1,40}?)\s*\))" +
+      R"(|\bmy\s+)" + kKin + R"(\s+([a-z0-9-]+(?:\s+)" + kNameEnd + R"([a-z0-9][a-z0-9-]*)?))");
   // "the sedan, a kia optima," and "it was a nissan altima" describe a
-  // vehicle already named.
-  static const regex kAppositive(R"((?:\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*|\bit (?:was|is)\s+)$)");
+  // vehicle already named; "the other vehicle, a 2011 kia forte," names one
+  // (group 1: the noun phrase).
+  static const regex kAppositive(R"((\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*|\bit (?:was|is)\s+)$)");
+  // "v1, a 2006 mercury grand marquis," and "v1 was a 2011 nissan altima"
+  // describe the vehicle already numbered ("the case vehicle").
+  static const regex kNumberedAppositive(R"(\bv([1-9])\s*(?:,|\(|\s+(?:was|is))\s*$)");
   // "a sedan, a kia optima,": a make or model year after an unnamed noun
   // names it (a list of vehicles names a noun each: "a car, a van and ...").
   static const regex kNamedAppositive(R"(\b(?:a|an)\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\s*,\s*$)");
   static const regex kFirstPerson(R"(\b(?:i|me)\b(?!-))");
   static const regex kMy(R"(\bmy\b)");
+  static const regex kRef(R"(\bv([1-9])\b)");
+  static const regex kWord(R"([a-z][a-z-]{2,})");
+  // Words of a name that are no name of their own: "a 2006 mercury grand
+  // marquis" is no "the grand".
+  static const regex kNotAHead(
+      R"(^(?:grand|town|city|country|sport|land|park|star|new|crew|club|extended|door|wheel|drive|model|series|limited|base|super|special|custom|classic|cargo|box|utility|passenger|four|two|full|size|compact|mid|light|heavy|duty|north\w*|south\w*|east\w*|west\w*|white|black|silver|gray|grey|red|blue|green|gold|maroon|tan|beige|brown|yellow|orange|purple|burgundy|dark|bright|other|older|newer|small|large|big|little|old|parked|unoccupied)$)");
   Numbered out{s, {}};
-  std::map<string, int> owner;  // head noun -> vehicle, 0 when two share it
-  int next = 1;
-  auto head_of = [](const string& noun) { return noun.substr(0, noun.find(' ')); };
+  std::map<string, int> owner;  // head word -> vehicle, 0 when two share it
+  auto own = [&owner](const string& head, int v) {
+    if (head.empty()) return;
+    const auto at = owner.find(head);
+    if (at == owner.end()) owner[head] = v;
+    else if (at->second != v) at->second = 0;
+  };
+  // The words a phrase can be called by later: its class noun (with "truck"
+  // for a pickup or a tractor, "car" for a sedan), its make and its model.
+  auto heads_of = [&](const string& phrase) {
+    std::vector<string> heads;
+    for (auto it = std::sregex_iterator(phrase.begin(), phrase.end(), kWord); it != std::sregex_iterator(); ++it) {
+      const string w = it->str();
+      if (Has(w, kNotAHead)) continue;
+      heads.push_back(w);
+      if (w == "pickup" || w == "tractor" || w == "tractor-trailer" || w == "semi" || w == "semitrailer") heads.push_back("truck");
+      if (w == "sedan" || w == "coupe" || w == "hatchback" || w == "wagon") heads.push_back("car");
+    }
+    return heads;
+  };
+  // An unnumbered "a 2011 kia forte sedan" or "a white ford explorer" is
+  // later called by its make and model too; "a school bus" by "the bus".
+  static const regex kYear(R"(\b(?:19|20)\d\d\s+)");
+  static const regex kMakeWord(R"(\b)" + kMakes + R"((?:\s+([a-z][a-z0-9-]*))?)");
+  auto name_heads = [&](const string& phrase, const string& noun) {
+    smatch nm;
+    if (std::regex_search(phrase, nm, kYear)) return heads_of(nm.suffix().str());
+    std::vector<string> heads = heads_of(noun);
+    if (std::regex_search(phrase, nm, kMakeWord)) {
+      for (const string& w : heads_of(nm[0].str())) heads.push_back(w);
+    }
+    return heads;
+  };
+  int taken = 0;  // "the first car", "the case vehicle" (v1)
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), kRef); it != std::sregex_iterator(); ++it) {
+    taken = std::max(taken, (*it)[1].str()[0] - '0');
+  }
+  int next = taken + 1;
   smatch m;
-  if (std::regex_search(out.text, m, kMine)) {
-    owner[head_of(m[2].str())] = 1;
+  if (taken > 0) {
+  } else if (std::regex_search(out.text, m, kMine)) {
+    own(m[2].str().substr(0, m[2].str().find(' ')), 1);
     out.descriptions[1] = m[1].str();
     out.text = std::regex_replace(std::regex_replace(out.text, kMine, "v1"), kFirstPerson, "v1");
     out.text = std::regex_replace(out.text, kMy, "v1's");  // "hit my passenger side", "into my lane"
@@ -394,8 +460,9 @@ Numbered NameUnnumberedVehicles(const string& s) {
     out.text = std::regex_replace(out.text, kMy, "v1's");
     next = 2;
   }
+
   string rebuilt;
-  int motorist = 0;
+  int person = 0;  // a vehicle known by its driver: "a motorist", "someone"
   auto from = out.text.cbegin();
   for (auto it = std::sregex_iterator(out.text.cbegin(), out.text.cend(), kIntro);
        it != std::sregex_iterator() && next <= 9; ++it) {
@@ -404,50 +471,94 @@ Numbered NameUnnumberedVehicles(const string& s) {
     string phrase;
     if (im[3].matched) {
       phrase = im[3].str();
-      heads = {im[4].str()};
+      heads = heads_of(phrase.substr(5));
     } else if (im[5].matched) {
       phrase = im[5].str();
-      heads = {im[6].str()};
+      heads = heads_of(phrase);
     } else if (im[7].matched) {
       const bool rider = im[7].str() == "motorcyclist";
       phrase = rider ? "motorcycle" : "car";
       heads = {im[7].str(), phrase};
     } else if (im[8].matched) {
-      phrase = im[8].str();
+      phrase = "car";
+    } else if (im[9].matched) {
+      phrase = im[9].str();
       heads = {};  // "the car behind me" is not what a later "the car" means
+    } else if (im[11].matched) {
+      // "the trailblazer (2007 chevrolet trailblazer)": a name once known.
+      const auto known = owner.find(im[11].str());
+      if (known != owner.end() && known->second > 0) continue;
+      phrase = im[12].str();
+      heads = heads_of(im[11].str() + " " + phrase.substr(5));
+    } else if (im[13].matched) {
+      phrase = im[13].str();
+      heads = heads_of(phrase);
     } else {
+      if (im[2].str() == "vehicle" && im.str().rfind("another", 0) != 0) continue;  // "a vehicle" is too vague to count
       phrase = im[1].str();
-      heads = {head_of(im[2].str())};
+      heads = name_heads(phrase, im[2].str());
     }
-    if (!heads.empty() && heads[0] == "vehicle" && im.str().rfind("another", 0) != 0) continue;  // "a vehicle" is too vague to count
     const size_t at = static_cast<size_t>(im[0].first - out.text.cbegin());
     const size_t back = std::min<size_t>(at, 60);
-    if (!im[8].matched && std::regex_search(out.text.substr(at - back, back), kAppositive)) continue;
+    const string before = out.text.substr(at - back, back);
+    const bool intro = im[1].matched || im[3].matched || im[5].matched;
+    smatch am;
+    if (intro && std::regex_search(before, am, kNumberedAppositive)) {
+      // "v1, a 2006 mercury grand marquis,": the case vehicle described.
+      const int v = am[1].str()[0] - '0';
+      if (!out.descriptions.count(v)) out.descriptions[v] = phrase;
+      for (const string& head : heads) own(head, v);
+      continue;
+    }
+    if (intro && std::regex_search(before, am, kAppositive)) {
+      // "the sedan, a kia optima,": the sedan described; "the other vehicle,
+      // a 2011 kia forte sedan,", a vehicle not named before, introduced.
+      const string noun = am[2].matched ? am[2].str().substr(0, am[2].str().find(' ')) : string();
+      const auto known = owner.find(noun);
+      if (noun.empty() || (known != owner.end() && known->second > 0)) {
+        if (!noun.empty()) {
+          for (const string& head : heads) own(head, known->second);
+        }
+        continue;
+      }
+      const auto the = im[0].first - static_cast<std::ptrdiff_t>(am.length(0));
+      if (the < from) continue;
+      rebuilt.append(from, the);
+      rebuilt += "v" + std::to_string(next) + ", ";
+      out.descriptions[next] = phrase;
+      for (const string& head : heads) own(head, next);
+      ++next;
+      from = im[0].first;
+      continue;
+    }
     const bool follows_numbered = next > 1 && from != out.text.cbegin() && im[0].first - from <= 3;
-    if ((im[3].matched || im[5].matched) && follows_numbered &&
-        std::regex_search(out.text.substr(at - back, back), kNamedAppositive)) {
+    if ((im[3].matched || im[5].matched) && follows_numbered && std::regex_search(before, kNamedAppositive)) {
       out.descriptions[next - 1] = phrase;
-      for (const string& head : heads) owner[head] = owner.count(head) ? 0 : next - 1;
+      for (const string& head : heads) own(head, next - 1);
       continue;
     }
     rebuilt.append(from, im[0].first);
     rebuilt += "v" + std::to_string(next);
+    if (im[11].matched) rebuilt += ", a " + phrase + ",";
     out.descriptions[next] = phrase;
-    for (const string& head : heads) owner[head] = owner.count(head) ? 0 : next;
-    if (im[7].matched && im[7].str() == "motorist") motorist = next;
+    for (const string& head : heads) own(head, next);
+    if ((im[7].matched && im[7].str() == "motorist") || im[8].matched) person = next;
     ++next;
     from = im[0].second;
   }
   rebuilt.append(from, out.text.cend());
   for (const auto& [head, v] : owner) {
     if (v == 0) continue;
-    const regex the(R"(\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + head + R"(\b)");
+    const regex the(R"(\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + head + R"(\b(?!\s*\())");
     rebuilt = std::regex_replace(rebuilt, the, "v" + std::to_string(v));
   }
-  if (motorist > 0) {
-    // "a motorist ... when her car was struck": the motorist's own car.
+  if (person > 0) {
+    // "a motorist ... when her car was struck": the motorist's own car;
+    // "someone turned ... and v1 hit their passenger side": its side.
     static const regex kTheirCar(R"(\b(?:his|her|their)\s+(?:car|vehicle)\b)");
-    rebuilt = std::regex_replace(rebuilt, kTheirCar, "v" + std::to_string(motorist));
+    static const regex kTheirSide(R"(\b(?:his|her|their)\s+(?=(?:passenger|driver)'?s?[- ]?(?:side|door)\b|(?:front|rear|back|left|right)\b))");
+    rebuilt = std::regex_replace(rebuilt, kTheirCar, "v" + std::to_string(person));
+    rebuilt = std::regex_replace(rebuilt, kTheirSide, "v" + std::to_string(person) + "'s ");
   }
   if (next == 1) {
     // One vehicle that is never introduced ("he was driving his car north
@@ -744,7 +855,9 @@ const regex& ContactVerb() {
 
 string WithoutAvoidedContacts(const string& text) {
   static const regex kAvoided(
-      R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b)");
+      R"(\b(?:avoid\w*|prevent\w*)\s+(?:\w+\s+){0,2}?(?:strik\w*|hit\w*|contact\w*|collid\w*|impact\w*)\b|\bwithout\s+(?:strik\w*|hitting|contact\w*|collid\w*|impact\w*)\b|)"
+      // ... and contacts denied: "v3 behind v2 was not struck".
+      R"(\b(?:was|were)\s+not\s+(?:struck|hit|contacted|impacted)\b|\b(?:did|does)\s+not\s+(?:strike|hit|contact|collide|impact)\b)");
   return std::regex_replace(text, kAvoided, " ");
 }
 

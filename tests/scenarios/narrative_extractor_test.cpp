@@ -533,6 +533,64 @@ TEST(NarrativeExtractorTest, AShortDescriptionOfOneUnintroducedVehicleNamesItV1)
   EXPECT_EQ(driver.crash.striking.value, "V1");
 }
 
+TEST(NarrativeExtractorTest, AReportThatNamesItsVehiclesByMakeNumbersThemInOrder) {
+  // No V1 or V2 anywhere: a make with its model year in brackets, then an
+  // indefinite one with a direction before the year; later "the tundra".
+  const auto r = kExtractor.Extract(
+      "The Escape (2009 Ford Escape) was eastbound in the left lane of a divided highway. It crossed the "
+      "median and struck a westbound 2012 Toyota Tundra pickup head-on. The Tundra's driver braked. A car "
+      "behind the Tundra was not struck and its driver stopped to help.");
+  ASSERT_EQ(r.participant_count.value, 2);
+  EXPECT_EQ(r.vehicles[0].travel.value, Compass::kEast);
+  EXPECT_EQ(r.vehicles[1].vehicle_class.value, VehicleClass::kPickup);
+  EXPECT_EQ(r.crash.striking.value, "V1");
+  EXPECT_EQ(r.crash.struck.value, "V2");
+}
+
+TEST(NarrativeExtractorTest, ACaseVehicleReportNamesTheOtherVehicleAfterIt) {
+  // "The case vehicle" is V1; "the other vehicle, a ..." and "a 2014 ram
+  // 1500 pickup was westbound" are V2, with what they did.
+  const auto other = kExtractor.Extract(
+      "The case vehicle, a 2008 Buick Lucerne, was traveling south in the southbound lane. The other vehicle, a "
+      "2013 Hyundai Accent sedan, had stopped in a parking lot exit facing east. The Hyundai's driver pulled out "
+      "to turn left, and the front of the Buick struck the left side of the Hyundai.");
+  ASSERT_EQ(other.participant_count.value, 2);
+  EXPECT_EQ(other.vehicles[1].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(other.crash.struck.value, "V2");
+  EXPECT_EQ(other.crash.struck_area.value, DamageArea::kLeft);
+
+  const auto pickup = kExtractor.Extract(
+      "The case vehicle, a 2015 Mazda CX-5, was northbound on a rural road and stopped at a stop sign. A 2014 Ram "
+      "1500 pickup was westbound on the through road. The case vehicle pulled into the intersection and the front "
+      "of the Ram struck its right side.");
+  ASSERT_EQ(pickup.participant_count.value, 2);
+  EXPECT_EQ(pickup.vehicles[1].travel.value, Compass::kWest);
+  EXPECT_EQ(pickup.crash.striking.value, "V2");
+}
+
+TEST(NarrativeExtractorTest, AnUnnumberedVehicleOnlyAtTheSceneAfterwardTookNoPart) {
+  const auto r = kExtractor.Extract(
+      "The case vehicle was westbound on a wet two-lane road at night when it slid off the road. The left side of "
+      "the vehicle struck a utility pole. No other vehicles were involved, and a car that had been following at a "
+      "distance stopped and its occupants called 911.");
+  EXPECT_EQ(r.participant_count.value, 1);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+}
+
+TEST(NarrativeExtractorTest, AShortDescriptionNamesARelativesCarAndAModel) {
+  const auto kin = kExtractor.Extract(
+      "A car crossed the center line on Route 12 and hit my son's Silverado head on.");
+  ASSERT_EQ(kin.participant_count.value, 2);
+  EXPECT_EQ(kin.crash.striking.value, "V1");
+  EXPECT_EQ(kin.crash.struck.value, "V2");
+
+  const auto model = kExtractor.Extract(
+      "A van ran the stop sign and hit a Camry that was crossing the intersection. The Camry was pushed into a pole.");
+  ASSERT_EQ(model.participant_count.value, 2);
+  EXPECT_EQ(model.crash.struck.value, "V2");
+  EXPECT_EQ(model.crash.type.value, CrashType::kAngle);
+}
+
 TEST(NarrativeExtractorTest, AnAreaBelongsToTheNearestVehicle) {
   const auto r = kExtractor.Extract("V1 was driving north. V2 hit V1 on the left side.");
   EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
