@@ -217,7 +217,7 @@ void ReadContact(Reading& rd) {
     // driver's door"): "the driver of v1" is a person.
     static const string kArea =
         R"(((?:(?:left|right|front|rear|back)(?:[- ]|\s)*(?:hand\s+)?){1,3}(?:side|end|corner|quarter(?:\s+panel)?|bumper|door|fender|plane|panel|area|portion|wheel|tire|half)?s?|(?:driver|passenger)'?s?[- ]?(?:side|door|front|rear)(?:[- ]|\s)*(?:side|door|fender|corner|quarter(?:\s+panel)?)?s?))";
-    static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+)?v([1-9])\b)");
+    static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+(?:(?:legally\s+|illegally\s+)?(?:parked|unoccupied|stalled|disabled|abandoned)\s+)?)?v([1-9])\b)");
     static const regex kVs(R"(\bv([1-9])'?s\s+)" + kArea);
     static const regex kVOn(R"(\bv([1-9])\s+(?:(?!v[1-9]\b)\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
     // "with its front" is the striker's; "with the rear of v2" names v2's.
@@ -621,6 +621,11 @@ void SetDamagedPlanes(Reading& rd) {
     if (w.right) return DamageArea::kRight;
     return DamageArea::kUnknown;
   };
+  if (!striker && r.vehicles.size() == 1 && type == CrashType::kSingleVehicle) {
+    // "the front struck a 60 cm tree", "it left the road and overturned":
+    // the crash's one vehicle did whatever was done.
+    r.crash.striking.Set("V1", Provenance::kInferred);
+  }
   if (striker) {
     r.crash.striking.Set("V" + std::to_string(striker), Provenance::kStated);
     if (area_words.count(striker)) {

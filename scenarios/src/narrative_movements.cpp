@@ -659,6 +659,19 @@ void ReadVehicles(Reading& rd) {
       break;
     }
   }
+  // "struck the back of the parked v2", "v2 was not in transport": how v2
+  // stood, wherever the report tells it.
+  {
+    static const regex kParkedRef(
+        R"(\b(?:the|a)\s+(?:legally\s+|illegally\s+)?(?:parked|unoccupied|abandoned)\s+v([1-9])\b|\bv([1-9])\s+(?:was|had been)\s+(?:\w+\s+)?not in transport\b)");
+    for (const Sentence& s : sentences) {
+      if (s.kind == Kind::kPeople) continue;
+      for (auto it = std::sregex_iterator(s.text.begin(), s.text.end(), kParkedRef); it != std::sregex_iterator(); ++it) {
+        const size_t k = static_cast<size_t>(std::stoi((*it)[1].matched ? (*it)[1].str() : (*it)[2].str()));
+        if (k < narrative.size()) narrative[k].parked = true;
+      }
+    }
+  }
   // CIREN case summaries code a vehicle that stopped and then turned by its
   // turn (the development set's one such case, a car stopped in the mouth of
   // a driveway waiting to turn left, is coded turning left); NMVCCS reports,

@@ -194,8 +194,9 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
   // Not a place in a queue: "the 3rd vehicle in a queue waiting for the light",
   // "the 4th car in the eastbound queue".
   static const regex kOrdinalVehicle(
-      R"(\b(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b(?!\s+(?:in\s+(?:a\s+|the\s+)?(?:[\w-]+\s+)?(?:queue|line)|from\s+the\s+(?:front|light|signal|stop)|stopped|waiting)\b))");
-  s = std::regex_replace(s, kOrdinalVehicle, "v$1");
+      R"(\b((?:a|an|another)\s+)?(?:the\s+)?([1-4])(?:st|nd|rd|th)\s+(?:vehicle|car|unit|auto)\b(?!\s+(?:in\s+(?:a\s+|the\s+)?(?:[\w-]+\s+)?(?:queue|line)|from\s+the\s+(?:front|light|signal|stop)|stopped|waiting)\b))");
+  // (Nor "a second car carrying friends": one more car, not the second.)
+  s = ReplaceWith(s, kOrdinalVehicle, [](const smatch& m) { return m[1].matched ? m[0].str() : "v" + m[2].str(); });
   // A CIREN summary that never numbers its case vehicle ("the case vehicle,
   // a 2002 toyota camry, ... v2, a 2000 ford f-150"): the case vehicle is v1.
   // Once numbered ("v1 (case vehicle)", "the case vehicle (v1)", "v1, the
@@ -272,6 +273,13 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
     const bool year = name.size() > 5 && (name.compare(0, 2, "19") == 0 || name.compare(0, 2, "20") == 0) &&
                       std::isdigit(static_cast<unsigned char>(name[2])) && std::isdigit(static_cast<unsigned char>(name[3])) && name[4] == ' ';
     if (year) return "v" + m[2].str() + ", a " + name + ",";
+    // "the parked ranger (v2)": the ranger, and how it stood.
+    static const regex kState(R"(^(parked|unoccupied|disabled|abandoned|stalled)\s+)");
+    smatch sm;
+    if (std::regex_search(name, sm, kState)) {
+      numbered_names[sm.suffix().str()].insert(m[2].str());
+      return "the " + sm[1].str() + " v" + m[2].str() + (m[3].matched ? m[3].str() : string());
+    }
     numbered_names[name].insert(m[2].str());
     return "v" + m[2].str() + (m[3].matched ? m[3].str() : string());
   });
@@ -319,8 +327,10 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
       if (numbers.size() != 1 || name.size() < 3 || (!declared.count(name) && (name.size() < 4 || Has(name, kGeneric)))) {
         continue;
       }
-      const regex again(R"(\bthe\s+)" + EscapeRegex(name) + R"(\b(?!\s*\())");
-      s = std::regex_replace(s, again, "v" + *numbers.begin());
+      // (With how it stood: "the parked ranger" is "the parked v2".)
+      const regex again(R"(\bthe\s+(?:(parked|unoccupied|disabled|abandoned|stalled)\s+)?)" + EscapeRegex(name) + R"(\b(?!\s*\())");
+      const string v = "v" + *numbers.begin();
+      s = ReplaceWith(s, again, [&v](const smatch& am) { return am[1].matched ? "the " + am[1].str() + " " + v : v; });
     }
   }
   // A vehicle introduced by make and numbered only later ("a 2005 chevrolet

@@ -577,6 +577,26 @@ TEST(NarrativeExtractorTest, AnUnnumberedVehicleOnlyAtTheSceneAfterwardTookNoPar
   EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
 }
 
+TEST(NarrativeExtractorTest, AParkedVehicleNumberedAtTheEndMakesItASingleVehicleCrash) {
+  // "The parked Ranger (V2)" keeps how it stood; "a second car" that "was
+  // not involved" is one more car, not V2.
+  const auto parked = kExtractor.Extract(
+      "A 1997 Ford Ranger pickup had been left on the shoulder. V1, a 2001 Dodge Caravan, was northbound. The van "
+      "drifted onto the shoulder and its front struck the back of the parked Ranger. The parked Ranger (V2) was not "
+      "in transport.");
+  ASSERT_EQ(parked.participant_count.value, 2);
+  EXPECT_TRUE(parked.vehicles[1].parked.value);
+  EXPECT_EQ(parked.crash.type.value, CrashType::kSingleVehicle);
+  EXPECT_EQ(parked.crash.struck_area.value, DamageArea::kRear);
+
+  const auto alone = kExtractor.Extract(
+      "Vehicle one was northbound on a county road when it left the road in a curve and the front struck a tree. A "
+      "second car carrying friends, which had been following, was not involved.");
+  EXPECT_EQ(alone.participant_count.value, 1);
+  EXPECT_EQ(alone.crash.type.value, CrashType::kSingleVehicle);
+  EXPECT_EQ(alone.crash.striking.value, "V1");
+}
+
 TEST(NarrativeExtractorTest, AShortDescriptionNamesARelativesCarAndAModel) {
   const auto kin = kExtractor.Extract(
       "A car crossed the center line on Route 12 and hit my son's Silverado head on.");
