@@ -142,8 +142,12 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // light a block back and was speeding back up".
   static const regex kEarlierStop(
       R"(\b(?:stopped|come to a stop|came to a stop)\s+(?:at|for)\s+(?:the|a)\s+(?:previous|prior|last|earlier)\s+(?:\w+\s+){0,2}?(?:light|signal|sign|intersection|stop sign|traffic light)s?\b)");
+  // ... or an errand on the way: "had stopped at a convenience store about
+  // 20 minutes before the crash to buy coffee".
+  static const regex kErrandStop(
+      R"(\b(?:stopped|come to a stop|came to a stop)\s+(?:at|by|for)\s+(?:a|an|the|his|her|their)\s+(?:[\w'-]+\s+){0,2}?(?:store|station|restaurant|tavern|house|home|shop|market|mall|office|school|church|bank|pharmacy|diner|motel|hotel|coffee|lunch|dinner|breakfast|gas|fuel)\b(?!'?s?\s+(?:exit|driveway|drive|entrance|apron|lot|parking|pumps?|station)\b)|\b(?:stopped|come to a stop|came to a stop)\b[^.;]{0,60}?\b\d+\s+(?:minutes?|hours?|miles?|kilometers?|km)\s+(?:before|earlier|prior)\b)");
   string stops = t;
-  for (const regex* not_its_stop : {&kAlmostStopped, &kStoppedObject, &kQueueStopped, &kEarlierStop}) {
+  for (const regex* not_its_stop : {&kAlmostStopped, &kStoppedObject, &kQueueStopped, &kEarlierStop, &kErrandStop}) {
     stops = std::regex_replace(stops, *not_its_stop, " ");
   }
   // "moved forward ... and then stopped again": the last word is the stop.

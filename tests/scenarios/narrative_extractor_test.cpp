@@ -597,6 +597,18 @@ TEST(NarrativeExtractorTest, AParkedVehicleNumberedAtTheEndMakesItASingleVehicle
   EXPECT_EQ(alone.crash.striking.value, "V1");
 }
 
+TEST(NarrativeExtractorTest, AnErrandStopOnTheWayIsNoPreCrashStop) {
+  const auto r = kExtractor.Extract(
+      "V1 was northbound negotiating a curve when it drifted over the centerline. V2 was southbound in its lane. The "
+      "front of V1 struck the front of V2. The driver of V1 had stopped at a convenience store about 20 minutes "
+      "before the crash to buy coffee.");
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  // A stop in a station's exit before pulling out is still the stop.
+  const auto exit = kExtractor.Extract(
+      "V2 had stopped at the gas station exit and then pulled out to turn left. V1 was eastbound. V1 struck V2.");
+  EXPECT_EQ(exit.vehicles[1].pre_event.value, Movement::kStopped);
+}
+
 TEST(NarrativeExtractorTest, AShortDescriptionNamesARelativesCarAndAModel) {
   const auto kin = kExtractor.Extract(
       "A car crossed the center line on Route 12 and hit my son's Silverado head on.");
