@@ -206,6 +206,16 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheNmvccsStyle) {
       {"nmvccs_style_bj", 40,
        {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.92},
         {"collision_location", 0.87}, {"driving_actions", 0.68}, {"crash_type", 0.70}}},
+      {"nmvccs_style_bl", 40,
+       {{"participant_count", 0.97}, {"speed_limit", 0.97}, {"lane_count", 0.95},
+        {"collision_location", 0.95}, {"driving_actions", 0.86}, {"crash_type", 0.87}}},
+      // (Short texts: terse summaries and descriptions a member of the
+      // public types, many with no vehicle numbers, some with no lane count
+      // or limit, persons for vehicles: "the guy on my right", "someone
+      // turning left".)
+      {"nmvccs_style_bm", 40,
+       {{"participant_count", 0.82}, {"speed_limit", 0.85}, {"lane_count", 0.87},
+        {"collision_location", 0.80}, {"driving_actions", 0.75}, {"crash_type", 0.67}}},
   };
   for (const Set& set : sets) {
     SCOPED_TRACE(set.dir);
@@ -229,7 +239,7 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
                           "ciren_style_ab", "ciren_style_ad", "ciren_style_af",
                           "ciren_style_ai", "ciren_style_ak", "ciren_style_ao", "ciren_style_ar",
                           "ciren_style_av", "ciren_style_ay", "ciren_style_bb", "ciren_style_be", "ciren_style_bh",
-                          "ciren_style_bk"}) {
+                          "ciren_style_bk", "ciren_style_bn"}) {
     SCOPED_TRACE(dir);
     const ExtractionScore s =
         EvaluateExtraction(std::string(ACCSIM_SOURCE_DIR) + "/tests/data/" + dir, NarrativeExtractor{});
@@ -238,6 +248,10 @@ TEST(ExtractionEvalTest, ReadsNewReportsInTheCirenStyle) {
     if (std::string(dir) == "ciren_style_k") own["driving_actions"] = 0.60;
     if (std::string(dir) == "ciren_style_ab") own["lane_count"] = 0.92;
     if (std::string(dir) == "ciren_style_bh") own["driving_actions"] = 0.83;  // a pass and a lane change coded as the manoeuvre
+    if (std::string(dir) == "ciren_style_bn") {
+      own["driving_actions"] = 0.86;  // passes, lane changes and slowing leads coded as the manoeuvre
+      own["collision_location"] = 0.92;
+    }
     ExpectAtLeast(s, own);
   }
 }
