@@ -1422,7 +1422,10 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
   };
   std::vector<Limit> limits;
   static const regex kValue(R"(\b(\d{2,3})(?:\s*|-)(kmh|mph)\b)");  // "45 mph", "a 45-mph zone"
-  static const regex kBare(R"(\b(?:speed limit|limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet)))");
+  // (Also the number before the word: "route 9 has a 45 limit", "a 25
+  // zone".)
+  static const regex kBare(
+      R"(\b(?:speed limit|limit|posted)\b[^.]{0,30}?\b(\d{2})\b(?!\s*(?:kmh|mph|%|m\b|meters|feet))|\b(?:an?|the)\s+(\d{2})\s+(?:speed\s+)?(?:limit|zone)\b)");
   static const regex kAdvisory(R"((?:advisory|suggested|recommended|warning|curve)[^.]{0,25}$)");
   // A telegraphic list goes on after a semicolon without the limit word
   // ("highway posted 72 kmh (45 mph); side road 40 kmh (25 mph)").
@@ -1554,9 +1557,9 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     }
     smatch m;
     // ... a bare number only when it could be a limit in mph ("limit: 00" is none).
-    if (!found && std::regex_search(s.text, m, kBare) && std::stoi(m[1].str()) >= 5) {
+    if (!found && std::regex_search(s.text, m, kBare) && std::stoi(m[m[1].matched ? 1 : 2].str()) >= 5) {
       const size_t at = static_cast<size_t>(m.position());
-      limits.push_back({std::stoi(m[1].str()) * kMphToMps, "mph", OwnerAt(s, at),
+      limits.push_back({std::stoi(m[m[1].matched ? 1 : 2].str()) * kMphToMps, "mph", OwnerAt(s, at),
                         ctx.InheritedAxis(index, AxisIn(s.text.substr(0, at))),
                         order++, ClauseRoad(s.text, at), ctx.NamedAt(index, at)});
     }

@@ -609,6 +609,15 @@ TEST(NarrativeExtractorTest, AnErrandStopOnTheWayIsNoPreCrashStop) {
   EXPECT_EQ(exit.vehicles[1].pre_event.value, Movement::kStopped);
 }
 
+TEST(NarrativeExtractorTest, ALimitToldAsANumberBeforeTheWordIsRead) {
+  const auto r = kExtractor.Extract(
+      "A car turned left onto Highway 50 and got hit by a pickup. Highway 50 is four lanes with no median and a 55 "
+      "limit.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 55 * 0.44704, 1e-9);
+  const auto zone = kExtractor.Extract("V1 was northbound in a 25 zone when it struck V2, which was parked.");
+  EXPECT_NEAR(zone.road.speed_limit_mps.value, 25 * 0.44704, 1e-9);
+}
+
 TEST(NarrativeExtractorTest, AShortDescriptionNamesARelativesCarAndAModel) {
   const auto kin = kExtractor.Extract(
       "A car crossed the center line on Route 12 and hit my son's Silverado head on.");
