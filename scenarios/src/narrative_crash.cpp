@@ -217,7 +217,9 @@ void ReadContact(Reading& rd) {
     // driver's door"): "the driver of v1" is a person.
     static const string kArea =
         R"(((?:(?:left|right|front|rear|back)(?:[- ]|\s)*(?:hand\s+)?){1,3}(?:side|end|corner|quarter(?:\s+panel)?|bumper|door|fender|plane|panel|area|portion|wheel|tire|half)?s?|(?:driver|passenger)'?s?[- ]?(?:side|door|front|rear)(?:[- ]|\s)*(?:side|door|fender|corner|quarter(?:\s+panel)?)?s?))";
-    static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+(?:(?:legally\s+|illegally\s+)?(?:parked|unoccupied|stalled|disabled|abandoned)\s+)?)?v([1-9])\b)");
+    // (Also "the back of the parked v2"; the vehicle's number is the last group.)
+    static const regex kOfV(kArea + R"(\s+(?:side\s+)?of\s+(?:the\s+(?:(?:legally\s+|illegally\s+)?)" + StandingWord() +
+                            R"(\s+)?)?v([1-9])\b)");
     static const regex kVs(R"(\bv([1-9])'?s\s+)" + kArea);
     static const regex kVOn(R"(\bv([1-9])\s+(?:(?!v[1-9]\b)\w+\s+){0,2}?(?:on|in|at)\s+(?:the|its|it's|his|her)\s+)" + kArea);
     // "with its front" is the striker's; "with the rear of v2" names v2's.
@@ -263,7 +265,7 @@ void ReadContact(Reading& rd) {
     for (const string* part_of : {&contact_clause, &s}) {
       const string& part = *part_of;
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kOfV); it != std::sregex_iterator(); ++it) {
-        if (!marks_left_by(part, *it, 1)) note(std::stoi((*it)[2].str()), (*it)[1].str());
+        if (!marks_left_by(part, *it, 1)) note(std::stoi((*it)[it->size() - 1].str()), (*it)[1].str());
       }
       for (auto it = std::sregex_iterator(part.begin(), part.end(), kVs); it != std::sregex_iterator(); ++it) {
         if (!marks_left_by(part, *it, 2)) note(std::stoi((*it)[1].str()), (*it)[2].str());

@@ -91,6 +91,9 @@ const std::regex& ContactVerb();
 string WithoutAvoidedContacts(const string& text);
 // Nouns of an unnumbered vehicle, and of the objects a vehicle strikes.
 const std::regex& VehicleNoun();
+// How a vehicle stood when it is named for it, one capture group: "the
+// (parked) ranger", "the back of the (stalled) v2".
+const string& StandingWord();
 const std::regex& ObjectNoun();
 
 // Damage-area words of one vehicle ("left rear", "driver's door").

@@ -1559,7 +1559,8 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     // ... a bare number only when it could be a limit in mph ("limit: 00" is none).
     if (!found && std::regex_search(s.text, m, kBare) && std::stoi(m[m[1].matched ? 1 : 2].str()) >= 5) {
       const size_t at = static_cast<size_t>(m.position());
-      limits.push_back({std::stoi(m[m[1].matched ? 1 : 2].str()) * kMphToMps, "mph", OwnerAt(s, at),
+      const int mph = std::stoi(m[m[1].matched ? 1 : 2].str());
+      limits.push_back({mph * kMphToMps, "mph", OwnerAt(s, at),
                         ctx.InheritedAxis(index, AxisIn(s.text.substr(0, at))),
                         order++, ClauseRoad(s.text, at), ctx.NamedAt(index, at)});
     }

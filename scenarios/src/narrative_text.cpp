@@ -274,7 +274,7 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
                       std::isdigit(static_cast<unsigned char>(name[2])) && std::isdigit(static_cast<unsigned char>(name[3])) && name[4] == ' ';
     if (year) return "v" + m[2].str() + ", a " + name + ",";
     // "the parked ranger (v2)": the ranger, and how it stood.
-    static const regex kState(R"(^(parked|unoccupied|disabled|abandoned|stalled)\s+)");
+    static const regex kState("^" + StandingWord() + R"(\s+)");
     smatch sm;
     if (std::regex_search(name, sm, kState)) {
       numbered_names[sm.suffix().str()].insert(m[2].str());
@@ -328,7 +328,7 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
         continue;
       }
       // (With how it stood: "the parked ranger" is "the parked v2".)
-      const regex again(R"(\bthe\s+(?:(parked|unoccupied|disabled|abandoned|stalled)\s+)?)" + EscapeRegex(name) + R"(\b(?!\s*\())");
+      const regex again(R"(\bthe\s+(?:)" + StandingWord() + R"(\s+)?)" + EscapeRegex(name) + R"(\b(?!\s*\())");
       const string v = "v" + *numbers.begin();
       s = ReplaceWith(s, again, [&v](const smatch& am) { return am[1].matched ? "the " + am[1].str() + " " + v : v; });
     }
@@ -382,12 +382,12 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
   static const regex kMine(R"(\bmy\s+(?!)" + kKin + R"()((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
   // "a red suv", "another car" (groups 1, 2), a model year, after at most
   // two words ("a northbound 2004 toyota tundra pickup", groups 3, 4), a make
-  // with its model: "a white ford explorer" (groups 5, 6), a rider, driver
-  // or person named for the vehicle: "a motorcyclist", "someone" (group 7),
-  // once the narrator is v1, "the car behind me" (groups 8, 9), a name with
-  // its model year in brackets: "the trailblazer (2007 chevrolet
-  // trailblazer)" (groups 10, 11), and a relative's: "my husband's f-150"
-  // (group 12).
+  // with its model: "a white ford explorer" (groups 5, 6), a rider or driver
+  // named for the vehicle: "a motorcyclist" (group 7), a person: "someone"
+  // (group 8), once the narrator is v1, "the car behind me" (groups 9, 10),
+  // a name with its model year in brackets: "the trailblazer (2007
+  // chevrolet trailblazer)" (groups 11, 12), and a relative's: "my
+  // husband's f-150" (group 13).
   static const regex kIntro(
       R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
       // (Not a place named for vehicles: "witnesses in a bus shelter".)
@@ -456,21 +456,20 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
   }
   int next = taken + 1;
   smatch m;
-  if (taken > 0) {
-  } else if (std::regex_search(out.text, m, kMine)) {
+  if (taken == 0 && std::regex_search(out.text, m, kMine)) {
     own(m[2].str().substr(0, m[2].str().find(' ')), 1);
     out.descriptions[1] = m[1].str();
     out.text = std::regex_replace(std::regex_replace(out.text, kMine, "v1"), kFirstPerson, "v1");
     out.text = std::regex_replace(out.text, kMy, "v1's");  // "hit my passenger side", "into my lane"
     next = 2;
-  } else if (static const regex kQuoted(R"("[^"]{0,400}")"); Has(std::regex_replace(out.text, kQuoted, " "), kFirstPerson)) {
+  } else if (static const regex kQuoted(R"("[^"]{0,400}")");
+             taken == 0 && Has(std::regex_replace(out.text, kQuoted, " "), kFirstPerson)) {
     // A narrator known only as "i" / "me" drives v1; a quoted "i" is someone
     // else speaking ("'i saw it coming,' a witness said").
     out.text = std::regex_replace(out.text, kFirstPerson, "v1");
     out.text = std::regex_replace(out.text, kMy, "v1's");
     next = 2;
   }
-
   string rebuilt;
   int person = 0;  // a vehicle known by its driver: "a motorist", "someone"
   auto from = out.text.cbegin();
@@ -869,6 +868,11 @@ string WithoutAvoidedContacts(const string& text) {
       // ... and contacts denied: "v3 behind v2 was not struck".
       R"(\b(?:was|were)\s+not\s+(?:struck|hit|contacted|impacted)\b|\b(?:did|does)\s+not\s+(?:strike|hit|contact|collide|impact)\b)");
   return std::regex_replace(text, kAvoided, " ");
+}
+
+const string& StandingWord() {
+  static const string kStanding = R"((parked|unoccupied|disabled|abandoned|stalled))";
+  return kStanding;
 }
 
 const regex& VehicleNoun() {
