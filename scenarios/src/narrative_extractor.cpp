@@ -154,7 +154,8 @@ void ReadDescriptions(Reading& rd) {
       for (const auto& [alias, v] : aliases) alt += (alt.empty() ? "" : "|") + EscapeRegex(alias);
       // "the stopped jetta", "the oncoming ford": a state word may come first.
       const regex alias_re(
-          R"(\bthe\s+(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|slow-moving|slowing|disabled|stalled|first|second)\s+)?()" +
+          // (And the driver's age: "the 23-year-old mazda driver said".)
+          R"(\bthe\s+(?:\d{2}[- ]year[- ]old\s+)?(?:(?:19|20)\d\d\s+)?(?:(?:stopped|parked|other|struck|striking|turning|oncoming|lead|leading|following|slower|slow-moving|slowing|disabled|stalled|first|second)\s+)?()" +
           // (Not a place named after one: "the car wash", "the truck stop"; "the
           // van driver" is its driver.)
           // (Nor one parked by the road: "beside the car parked ahead of an
@@ -339,6 +340,13 @@ void CountParticipants(Reading& rd) {
       }
     }
     while (counted >= fewest && impact < sentences.size()) {
+      // A vehicle the report calls noncontact ("no critical reason was coded
+      // to v1, since the noncontact pickup's entry was the cause") is not
+      // one of the crash's, where the report numbered none.
+      if (!rd.numbered_by_report && Has(norm, regex(R"(\bnoncontact\s+v)" + std::to_string(counted) + R"(\b)"))) {
+        --counted;
+        continue;
+      }
       bool took_part = false;
       for (size_t i = 0; i < std::min(no_others, sentences.size()) && !took_part; ++i) {
         const Sentence& s = sentences[i];
@@ -605,6 +613,13 @@ void SplitSegments(Reading& rd) {
       int owner = s.kind == Kind::kCoding && !s.refs.empty() ? s.refs.front().vehicle : focus;
       if (s.kind != Kind::kCoding) {
         if (const int by_sex = pronoun_owner(s.text, focus); by_sex > 0) owner = focus = by_sex;
+        // An opening participle is its subject's: "merging onto the freeway
+        // from the on-ramp, v1 got squeezed", "while turning left, v2 ...".
+        static const regex kOpeningParticiple(
+            R"(^\s*(?:(?:while|after|when|upon|before)\s+)?[a-z]+ing\b[^.;:]{0,120},\s*(?:the\s+(?:driver|operator)\s+of\s+)?$)");
+        if (!starts.empty() && !starts.front().perceived && Has(s.text.substr(0, first), kOpeningParticiple)) {
+          owner = starts.front().vehicle;
+        }
       }
       // A sentence about the scene is no vehicle's, whoever was named last
       // ("v2 was a tractor-trailer. location is a divided highway: 2

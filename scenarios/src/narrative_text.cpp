@@ -388,16 +388,21 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
   // a name with its model year in brackets: "the trailblazer (2007
   // chevrolet trailblazer)" (groups 11, 12), and a relative's: "my
   // husband's f-150" (group 13).
+  // Where another vehicle is, seen from one already named: "the car behind
+  // it", "the guy on v1's right", "the truck in the right lane".
+  static const string kPlace =
+      R"((?:(?:behind|ahead of|in front of|next to|beside|alongside)\s+(?:v1|it|him|her|them|us)\b|(?:on|to)\s+v1's\s+(?:left|right)\b|in\s+the\s+(?:[a-z]+\s+)?lane\b|(?:coming|going|traveling|heading)\s+(?:the\s+other\s+way|in\s+the\s+opposite\s+direction)\b|from\s+the\s+(?:opposite|other)\s+direction\b))";
   static const regex kIntro(
       R"(\b(?:a|an|another)\s+((?:(?!a\b|an\b|the\b)[a-z0-9-]+\s+){0,3}?)" + kNoun +
       // (Not a place named for vehicles: "witnesses in a bus shelter".)
       R"()\b(?!\s+(?:shelter|stop|station|depot|bench|wash|dealership|dealer|lot|garage|repair|shop|park)\b)|\b(?:a|an)\s+(?:(?!a\b|an\b|the\b)[a-z-]+\s+){0,2}?((?:19|20)\d\d\s+([a-z][a-z0-9-]*)(?:\s+)" +
       kNameEnd + R"([a-z0-9][a-z0-9-]*){0,3}))" + R"(|\b(?:a|an)\s+()" + kColour + R"(?)" + kMakes + R"((?:\s+)" +
       kNameEnd + R"([a-z0-9][a-z0-9-]*)?)\b)" +
-      R"(|\b(?:a|an)\s+(motorcyclist|motorist)\b|\b(someone|somebody)\b|\bthe\s+(?:other\s+)?()" + kNoun +
-      R"()(?=\s+(?:behind|ahead of|in front of) v1\b))" +
+      R"(|\b(?:a|an)\s+(motorcyclist|motorist)\b|\b(someone|somebody)\b|\bthe\s+(?:other\s+)?)" + kColour +
+      R"(?()" + kNoun.substr(0, kNoun.size() - 1) + R"(|guy|man|woman|lady|person|kid))(?=\s+)" + kPlace + R"())" +
       R"(|\bthe\s+([a-z][a-z0-9-]*(?:\s+[a-z][a-z0-9-]*)?)\s*\(\s*((?:19|20)\d\d\s+[a-z][^()]{1,40}?)\s*\))" +
-      R"(|\bmy\s+)" + kKin + R"(\s+([a-z0-9-]+(?:\s+)" + kNameEnd + R"([a-z0-9][a-z0-9-]*)?))");
+      R"(|\bmy\s+)" + kKin + R"(\s+([a-z0-9-]+(?:\s+)" + kNameEnd + R"([a-z0-9][a-z0-9-]*)?))" +
+      R"(|(?:^|[.!?]\s+)(the\s+)" + kColour + R"(?(?:[a-z-]+\s+)??)" + kNoun + R"(\b(?!\s*\()))");
   // "the sedan, a kia optima," and "it was a nissan altima" describe a
   // vehicle already named; "the other vehicle, a 2011 kia forte," names one
   // (group 1: the noun phrase).
@@ -472,6 +477,7 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
   }
   string rebuilt;
   int person = 0;  // a vehicle known by its driver: "a motorist", "someone"
+  bool opened_definite = false;  // v1 was "the blue car" the text opened on
   auto from = out.text.cbegin();
   for (auto it = std::sregex_iterator(out.text.cbegin(), out.text.cend(), kIntro);
        it != std::sregex_iterator() && next <= 9; ++it) {
@@ -491,8 +497,29 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
     } else if (im[8].matched) {
       phrase = "car";
     } else if (im[9].matched) {
+      // "the other car in the left lane" is the other one when there is one,
+      // and "the truck in the right lane" the truck already met.
+      const auto known = owner.find(im[10].str());
+      if ((next > 2 && im.str().find("other") != string::npos) || (known != owner.end() && known->second > 1)) continue;
       phrase = im[9].str();
       heads = {};  // "the car behind me" is not what a later "the car" means
+      static const regex kPersonWord(R"(^(?:guy|man|woman|lady|person|kid)$)");
+      if (Has(im[10].str(), kPersonWord)) {
+        phrase = "car";
+        person = next;
+      }
+    } else if (im[14].matched) {
+      // "the blue car stopped at the stop sign ...": a text that opens on a
+      // vehicle by the definite article has introduced it.
+      if (next != 1) continue;
+      rebuilt.append(from, im[14].first);
+      rebuilt += "v1";
+      out.descriptions[1] = im[14].str().substr(4);
+      for (const string& head : heads_of(im[14].str().substr(4))) own(head, 1);
+      opened_definite = true;
+      ++next;
+      from = im[14].second;
+      continue;
     } else if (im[11].matched) {
       // "the trailblazer (2007 chevrolet trailblazer)": a name once known.
       const auto known = owner.find(im[11].str());
@@ -540,6 +567,27 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
       from = im[0].first;
       continue;
     }
+    // "the buick, a 1997 century driven by ...": the make names a vehicle
+    // its model year introduces (or describes, when the make is known).
+    static const regex kMakeAppositive(R"(\bthe\s+)" + kMakes + R"(\s*,\s*$)");
+    if (im[3].matched && std::regex_search(before, am, kMakeAppositive)) {
+      const string make = am[1].str();
+      const auto known = owner.find(make);
+      if (known != owner.end() && known->second > 0) {
+        for (const string& head : heads) own(head, known->second);
+        continue;
+      }
+      const auto the = im[0].first - static_cast<std::ptrdiff_t>(am.length(0));
+      if (the < from) continue;
+      rebuilt.append(from, the);
+      rebuilt += "v" + std::to_string(next) + ", ";
+      out.descriptions[next] = phrase;
+      own(make, next);
+      for (const string& head : heads) own(head, next);
+      ++next;
+      from = im[0].first;
+      continue;
+    }
     const bool follows_numbered = next > 1 && from != out.text.cbegin() && im[0].first - from <= 3;
     if ((im[3].matched || im[5].matched) && follows_numbered && std::regex_search(before, kNamedAppositive)) {
       out.descriptions[next - 1] = phrase;
@@ -558,8 +606,13 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
   rebuilt.append(from, out.text.cend());
   for (const auto& [head, v] : owner) {
     if (v == 0) continue;
-    const regex the(R"(\bthe\s+(?:[a-z0-9-]+\s+){0,2}?)" + head + R"(\b(?!\s*\())");
-    rebuilt = std::regex_replace(rebuilt, the, "v" + std::to_string(v));
+    // (Keeping what says it never touched: "the noncontact pickup" is
+    // "noncontact v2".)
+    const regex the(R"(\bthe\s+((?:[a-z0-9-]+\s+){0,2}?))" + head + R"(\b(?!\s*\())");
+    const string name = "v" + std::to_string(v);
+    rebuilt = ReplaceWith(rebuilt, the, [&name](const smatch& tm) {
+      return tm[1].str().find("noncontact") != string::npos ? "noncontact " + name : name;
+    });
   }
   if (person > 0) {
     // "a motorist ... when her car was struck": the motorist's own car;
@@ -569,15 +622,15 @@ Numbered NameUnnumberedVehicles(const string& s, bool numbered_by_report) {
     rebuilt = std::regex_replace(rebuilt, kTheirCar, "v" + std::to_string(person));
     rebuilt = std::regex_replace(rebuilt, kTheirSide, "v" + std::to_string(person) + "'s ");
   }
-  if (next == 1) {
+  if (next == 1 || (next == 2 && opened_definite)) {
     // One vehicle that is never introduced ("he was driving his car north
     // ... and struck a tree", "the driver of the car was westbound when she
     // ran off the road"): its driver and the car itself are v1.
     static const regex kOwnVehicle(R"(\b(?:the|his|her|their)\s+((?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"()\b)");
     static const regex kDriverPronoun(R"(\b(?:he|she)\b)");
     smatch om;
-    if (std::regex_search(rebuilt, om, kOwnVehicle)) {
-      out.descriptions[1] = om[1].str() + om[2].str();
+    if (std::regex_search(rebuilt, om, kOwnVehicle) || opened_definite) {
+      if (!opened_definite) out.descriptions[1] = om[1].str() + om[2].str();
       // "he was driving v1 north": the driver's verb moves the vehicle.
       static const regex kDriving(R"(\b(?:he|she|the driver)\s+((?:was\s+)?(?:driving|drove|operating|operated))\s+(?:the|his|her|their)\s+(?:[a-z0-9-]+\s+){0,2}?)" + kNoun + R"(\b)");
       rebuilt = std::regex_replace(rebuilt, kDriving, "v1 was traveling");
@@ -610,7 +663,7 @@ Kind KindOf(const string& s) {
       R"(critical\s*(?:pre-?\s*crash|precrash|event|reason)|associated factor|\bwas coded\b|\bcoded (?:as|to|for)\b|\bwere coded\b)");
   static const regex kPeople(
       R"(injur|transported|year[- ]old|years old|\b\d+ year\b|medication|lenses|glasses|eyesight|fatigue|treatment|)"
-      R"(hospital|trauma|ambulance|rested|health|alcohol|drugs|\bcited\b|citation|summons|ticket|interview|airbag|air bag|)"
+      R"(hospital(?!'?s?\s+(?:road|campus|drive\w*|entrance|exit|parking|lot|access|street|avenue|boulevard|way|lane)\b)|trauma|ambulance|rested|health|alcohol|drugs|\bcited\b|citation|summons|ticket|interview|airbag|air bag|)"
       R"(seat ?belt|belted|occupant|passenger(?!'?s? (?:side|door|corner|fender|quarter)| (?:vehicles?|cars?))|\b(?:his|her) way\b|going home|heading home|errand|medical|license|)"
       R"(towed|driven from the scene|driven away|fled|contact lens|pregnan)");
   static const regex kStatement(
@@ -621,6 +674,8 @@ Kind KindOf(const string& s) {
   // make the sentence one about people.
   static const regex kPeoplePhrase(
       R"(\b(?:driven|operated|occupied) by (?:an? |the |its )?[^,;()]{0,40}?\b(?:male|female|man|woman|driver|operator|person|teen\w*|girl|boy|\d+[- ]year[- ]olds|adults|people|persons|students)\b(?:\s+with (?:a|an|his|her) [^,;()]{0,30}?\b(?:license|permit)\b)?|\bwith (?:\d+|no|an?|its) (?:\w+ )?(?:occupants?|passengers?)\b|\bwith an? [^,;()]{0,30}?\b(?:driver|operator)\b(?:\s+and\s+(?:\d+|no|an?)\s+(?:\w+\s+)?(?:passengers?|occupants?)\b)?|\b(?:the|its|his|her|v[1-9]'s) driver,\s+an?\s+[^,;()]{0,60},|\bthe\s+\d+[- ]year[- ]old\s+(?:male|female|man|woman)\s+(?:driver|driving|operating)\b|)"
+      // ("driven by a 67-year-old retired farmer, was westbound".)
+      R"(\b(?:driven|operated) by (?:an? |the )?\d+[- ]year[- ]old\b[^,;()]{0,30}|)"
       // ... nor the driver's age as the subject of the vehicle's movement
       // ("its 58-year-old driver stopped at the stop sign and began a right turn",
       // "v2's 66-year-old driver had his left signal on and was slowing").
@@ -858,7 +913,7 @@ string Detail(const AreaWords& a) {
 const regex& ContactVerb() {
   // (Not a compound's tail: "pre-impact skid marks", "post-impact travel".)
   static const regex kContact(
-      R"((?:^|[^\w-])(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|engaged|(?:rolled|crept|creep|creeping|coasted|moved)\s+(?:forward\s+|ahead\s+|back(?:ward)?\s+)?into(?=\s+(?:the\s+)?v[1-9]'s\s+(?:rear|back|front|side|left|right|bumper)))\b)");
+      R"((?:^|[^\w-])(contact(?:ed|ing|s)?|struck|strik(?:e|es|ing)|stuck|impact(?:ed|ing|s)?|collid(?:ed|es|ing)|hit(?:s|ting)?|crashed|rear[- ]end(?:ed|ing)|sideswip(?:ed|ing)|swiped|raked|scraped|grazed|clipped|t-?bon(?:ed|ing)|broadsid(?:ed|ing)|ran into|slammed|smashed|smacked|rammed|plowed into|ploughed into|bumped into|engaged|(?:rolled|crept|creep|creeping|coasted|moved)\s+(?:forward\s+|ahead\s+|back(?:ward)?\s+)?into(?=\s+(?:the\s+)?v[1-9]'s\s+(?:rear|back|front|side|left|right|bumper)))\b)");
   return kContact;
 }
 
