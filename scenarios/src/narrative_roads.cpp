@@ -507,7 +507,7 @@ void ReadRoadKind(Reading& rd) {
   static const regex kTJunction(
       R"(\bt[- ]?(?:intersection|junction)|\b3[- ]leg|\btee\b|\btee[sd]?\s+into\b|\bt-shaped|\bthree[- ]leg|\bt-type intersection|)"
       // "a county road that ends at a t with a state route".
-      R"(\b(?:at|forms?|forming|makes?|making)\s+(?:a|the)\s+t\b(?![-'])|\bstem of the t\b)");
+      R"(\b(?:at|forms?|forming|makes?|making|ends?\s+in|ending\s+in|ended\s+in)\s+(?:a|the)\s+t\b(?![-'])|\bstem of the t\b)");
   static const regex kIntersection(
       R"(\bintersection\b|(?:^|[^a-z-])junction\b|\b4[- ](?:leg|way)\b|\bcrossroads?\b|\bside (?:road|street)|\bcross (?:road|street)|)" +
       WhereRoadsMeet());
@@ -764,7 +764,7 @@ std::vector<RoadStatement> LaneStatements(const Reading& rd, const RoadContext& 
       // eastbound lanes, 2 lanes wide": one direction's count, with its turn bay
       // ("2 through lanes and a left-turn bay").
       static const regex kDirectionSubject(
-          R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:of\s+the\s+(?:[\w-]+\s+){0,2}?(?:roadway|road|street|highway|avenue|boulevard|arterial)\s+)?(?:\w+\s+|(?:at|in|near)\s+(?:this|that|the)\s+(?:\w+\s+)?(?:point|location|area|site|place|section)\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*,\s*$)");
+          R"(\b(?:north|south|east|west)bound\s+(?:roadway|road|street|highway|lanes|side|carriageway|half|direction|approach|traffic)\s+(?:of\s+the\s+(?:[\w-]+\s+){0,2}?(?:roadway|road|street|highway|avenue|boulevard|arterial)\s+)?(?:\w+\s+|(?:at|in|near)\s+(?:this|that|the)\s+(?:\w+\s+)?(?:point|location|area|site|place|section)\s+)?(?:had|has|have|consisted of|consists of|carried|carries|widened to|widens to|narrowed to|narrows to|expanded to|expands to|was|is|were|are)\s+(?:only\s+|just\s+)?(?:(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\s+(?:and|plus)\s+|(?:a|an|1)\s+(?:left|right)[- ]turn\s+(?:lane|bay)\b[^.;]{0,50}?\bin addition to\s+(?:its|the)\s+)?$|\b(?:north|south|east|west)bound\s*,?\s+there\s+(?:were|was)\s+(?:only\s+|just\s+)?$|\b(?:north|south|east|west)bound\s+(?:lanes|roadway|side|carriageway)\s*[,:]\s*$)");
       // ("2 through lanes and 2 left-turn lanes at the intersection": 4.)
       static const regex kBayAfter(
           R"(^\s+(?:through\s+|travel\s+)?lanes?\s*,?\s+(?:and|plus)\s+(a|an|\d)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bays?|lanes?)\b|^\s+(?:and|plus)\s+(a|an|\d)\s+(?:(?!and\b)[\w-]+\s+){0,2}?(?:left|right)[- ]turn\s+(?:bays?|lanes?)\b)");
@@ -972,6 +972,15 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   // a 4-lane arterial".)
   if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1 && !rs.met; });
   if (!best && v1_way <= 0) best = pick([](const RoadStatement& rs) { return rs.owner <= 1; });
+  // Every count told in another vehicle's sentence ("v2 ... was northbound
+  // on a 2-lane residential street and stopped ... at an intersection with
+  // a 4-lane undivided avenue"; "v1 ... was eastbound in the curb lane of
+  // the avenue"): the one that names V1's road.
+  bool named_v1s = false;  // (then the axis the count was told on is the other vehicle's, not the road's)
+  if (!best && v1_way <= 0 && ctx.distinctive) {
+    best = pick([&](const RoadStatement& rs) { return SameRoad(rs.road, ctx.v1_road) || rs.counted == ctx.v1_road; });
+    named_v1s = best != nullptr;
+  }
   if (!best && v1_way <= 0 && !roads.empty()) best = &roads.front();
   // V1 travelling across the axis of the road described as the through
   // road came from the cross street, when the report describes one.
@@ -986,7 +995,7 @@ V1Lanes ChooseV1Statement(Reading& rd, const RoadContext& ctx, const std::vector
   // lanes of was on one it does not describe: an ordinary two-lane,
   // two-way road.
   const bool junction = AtJunction(r);
-  if (best && junction && ctx.v1_axis >= 0 && best->owner != 1 &&
+  if (best && junction && ctx.v1_axis >= 0 && best->owner != 1 && !named_v1s &&
       std::all_of(roads.begin(), roads.end(), [&](const RoadStatement& rs) {
         return rs.axis && *rs.axis != ctx.v1_axis && !rs.cross && rs.owner != 1;
       })) {
@@ -1539,14 +1548,17 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
       // (And "the posted speed limit on the county road was 72 kmh".)
       static const regex kOnRoadNounBefore(R"(\b(?:on|for|along|and)\s+(?:the|a|an)\s+(?:[\w/-]+\s+){0,2}?)" +
                                            RoadNoun() + R"((?:\s*,\s*|\s+at\s+|\s+(?:was|is)\s+|\s*)$)");
-      // ... or posted itself: "meets a 4-lane undivided arterial posted at 64 kmh".
-      static const regex kRoadPostedAt(R"(\b)" + RoadNoun() +
-                                       R"(\s+(?:that was |which was |was |is )?(?:posted|signed|zoned)\s+(?:at|for)\s+$)");
+      // ... or posted itself: "meets a 4-lane undivided arterial posted at
+      // 64 kmh", "with a 4-lane undivided avenue, 2 lanes each way, posted
+      // 30 mph".
+      static const regex kRoadPostedAt(
+          R"(\b)" + RoadNoun() +
+          R"((?:\s*,\s*[^,.;()]{1,30}?){0,2}?(?:\s*,\s*|\s+)(?:that was |which was |was |is )?(?:posted|signed|zoned)\s+(?:(?:at|for)\s+)?$)");
       smatch rn;
-      const string just_before = Before(s.text, pos, 40);
+      const string just_before = Before(s.text, pos, 40), further_before = Before(s.text, pos, 80);
       const string road = std::regex_search(tail, rn, kOnRoadNounAfter)          ? rn[1].str()
                           : std::regex_search(just_before, rn, kOnRoadNounBefore) ? rn[1].str()
-                          : std::regex_search(just_before, rn, kRoadPostedAt) && !GenericRoad(rn[1].str()) ? rn[1].str()
+                          : std::regex_search(further_before, rn, kRoadPostedAt) && !GenericRoad(rn[1].str()) ? rn[1].str()
                                                                                   : ClauseRoad(s.text, pos);
       const string on_named = ctx.names.OnAfter(tail);
       limits.push_back({value * (kmh ? kKmhToMps : kMphToMps), kmh ? "km/h" : "mph", owner,
@@ -1664,6 +1676,10 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
     pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.name == ctx.v1_named_road; });
   }
   if (!pick && ctx.distinctive) pick = first_limit([&](const Limit& l) { return l.owner <= 1 && SameRoad(l.road, ctx.v1_road); });
+  // (Told in another vehicle's sentence: "v2 ... stopped ... at an
+  // intersection with a 4-lane undivided avenue, 2 lanes each way, posted
+  // 30 mph. v1 ... was eastbound in the curb lane of the avenue".)
+  if (!pick && ctx.distinctive) pick = first_limit([&](const Limit& l) { return SameRoad(l.road, ctx.v1_road); });
   if (!pick && ctx.v1_axis >= 0) {
     pick = first_limit([&](const Limit& l) { return l.owner <= 1 && l.axis && *l.axis == ctx.v1_axis; });
   }
