@@ -90,7 +90,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   static const regex kMerge(
       R"(\bmerg(?:e|ed|es|ing)\b|\bentering the (?:freeway|interstate|highway) from|\b(?:on|from|along) (?:a|an|the) (?:[\w-]+[ ,]+){0,3}?(?:entrance|on-?) ramp\b|)"
       // "came down the ramp and reached the end of the acceleration lane".
-      R"(\b(?:in|into|along|from|reached|used|using) (?:the|an|its) (?:end of (?:the|an) )?acceleration lane\b)");
+      R"(\b(?:in|into|along|from|reached|used|using) (?:the|an|its) (?:end of (?:the|an) )?(?:short |long |1-lane |brief )?acceleration lane\b)");
   // "traffic was backed up" is a queue, not a vehicle reversing.
   static const regex kBack(
       R"(\bbacking\s+(?:up|out|in|into|from|toward|across)\b|\b(?:began|started|attempted|tried)\s+to\s+back\s+(?:up|out|in|into)\b|(?:^|\b(?!(?:was|were|is|are|been)\s)\w+\s+)backed\s+(?:up|out|into|from|toward|across)|\breversing\b|\bin reverse\b)");
@@ -98,6 +98,8 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\b(?:was|were)\s+(?:\w+\s+)?(?:passing|overtaking)\b|\bin the process of passing\b|\b(?:attempt\w*|began|started|trying|tried) to (?:pass|overtake)\b|\b(?:began|started)\s+(?:passing|overtaking)\b|\bto (?:pass|overtake)\s+(?:a|an)\s+(?:slower|slow|slow-moving)\b|\b(?:pulled|moved|swung|steered|went|crossed|entered)\s+(?:\w+\s+){0,7}?to (?:pass|overtake)\b)");
   static const regex kSlow(
       R"(\b(?:was|were)\s+(?!not\b|never\b)(?:\w+\s+)?(?:and\s+)?(?:slowing|decelerating|braking)\b|)"
+      // "v4, v3 and v2 were eastbound in the left lane in that order, all braking".
+      R"(,\s*all\s+(?:3\s+|4\s+|of them\s+)?(?:slowing|decelerating|braking)\b|)"
       // "was westbound in lane two, slowing from about 50 mph".
       R"((?:,|\band)\s+(?:slowing|decelerating)\s+(?:down\s+)?(?:from|for|to|because|due)\b|\bhad\s+(?:\w+\s+)?(?:slowed|decelerated)\b|\bslowed\s+(?:down\s+)?(?:for|because|due|to\s+(?:about\s+|approximately\s+|around\s+)?\d|to\s+(?:turn|make)\b)|\b(?:began|started)\s+(?:slowing|to slow|decelerating|braking)\b|\bslowed\s+(?:down\s+)?(?:and|,)\s+(?:then\s+)?(?:turned|(?:began|started)\s+(?:to\s+)?(?:(?:a|an|its|his|her)\s+(?:\w+\s+)?)?(?:turn|make|pull|enter|cross|mov|stop|brak)\w*|made|moved)\b)");
   static const regex kStraight(
@@ -106,22 +108,34 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // parked thing is what the vehicle struck, not the vehicle itself; nor is
   // one it saw ("could see past the parked truck").
   static const regex kParkedObject(
-      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)(?:\s*,?\s*(?:and\s+)?(?:parked|unoccupied))?\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+[\s-])?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b|\bparked\s+(?:cars|trucks|vans|vehicles)\b|)"
+      R"(\b(?:struck|hit|impacted|contacted|collided with|ran into|crashed into|sideswiped|rear[- ]ended|into)\s+(?:the\s+[\w -]{1,20}?\s+of\s+)?(?:a|an|another)\s+(?:\w+\s+){0,3}?(?:parked|unoccupied)(?:\s*,?\s*(?:and\s+)?(?:parked|unoccupied))?\b[^,.;]*|\b(?:the|a|an|another|several|other|many|\d)\s+(?:\w+[\s-])?parked\s+(?:[\w-]+\s+)?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|buses|trailers?)\b|\bparked\s+(?:cars|trucks|vans|vehicles)\b|\b(?:cars|trucks|vans|vehicles|suvs|pickups|buses|trailers)\s+(?:were\s+|are\s+|often\s+|usually\s+)?parked\b|)"
       // "thought it was parked, or going normal speed": the other's state as
       // the driver took it.
       R"(\b(?:thought|believed|assumed|figured|guessed)\s+(?:that\s+)?(?:it|the\s+\w+|v[1-9]|she|he|they)\s+(?:was|were|had been)\s+(?:\w+\s+)?parked\b|)"
       // "a landscaping trailer parked at the south curb limited the v2 driver's view".
-      R"(\b(?:a|an|another|the)\s+(?:[\w-]+\s+){0,2}?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|trailers?|sedans?)\s+(?:was\s+)?(?:double-)?parked\b|)"
+      R"(\b(?:a|an|another|the)\s+(?:[\w'-]+\s+){0,2}?(?:cars?|trucks?|vans?|vehicles?|suvs?|pickups?|bus|trailers?|sedans?)\s+(?:was\s+)?(?:double-)?parked\b|)"
       // "was passing the parked v2": the state of the vehicle named next.
       R"(\b(?:the|a)\s+(?:legally\s+|illegally\s+)?parked\s+(?=v[1-9]\b))");
   const bool parked = Has(std::regex_replace(t, kParkedObject, " "), kParked);
   if (parked && !Has(t, kLeavingParking)) e.parked = true;
   if (Has(t, kLeavingParking)) e.leaving_parking = true;
+  // Into a space: "pulled up beside an open space, stopped, shifted into
+  // reverse and began backing in", "was backing into a parking space".
+  static const regex kEnteringParking(
+      R"(\b(?:back\w*|pull\w*|turn\w*|steer\w*)\s+(?:\w+\s+){0,2}?into\s+(?:a|an|the|his|her|their)\s+(?:[\w-]+\s+){0,2}?(?:parking\s+)?(?:space|spot|stall|parking position)\b|)"
+      R"(\b(?:was|were|began|started|attempting|attempted|tried|trying)\s+(?:to\s+)?parallel[- ]park|\b(?:began|started)\s+(?:backing|to back)\s+in\b(?!to))");
+  if (Has(t, kEnteringParking)) e.entering_parking = true;
   if (Has(t, kRolledStop)) e.rolled_stop = true;
-  if (Has(t, kNoStop)) e.no_stop = true;
   static const regex kSlowedWord(
       R"(\b(?:slowed|slowing|slows|decelerat\w+|reduced\s+(?:\w+\s+)?speed|rolled|rolling|coasted|coasting)\b)");
   if (Has(t, kSlowedWord)) e.slowed_word = true;
+  // On a green nothing asks for a stop: "had a green ball and, without
+  // stopping, continued into its left turn" turned; it did not roll a stop
+  // unless it slowed ("slowed ... and began the left turn on a circular
+  // green without stopping").
+  static const regex kHadGreen(
+      R"(\b(?:had|with|on)\s+(?:a|the|its|his|her)\s+(?:steady\s+|circular\s+)?green\b|\b(?:signal|light)\s+(?:was|showed|displayed)\s+(?:a\s+)?green\b)");
+  if (Has(t, kNoStop) && (e.slowed_word || !Has(t, kHadGreen))) e.no_stop = true;
   static const regex kSkippedStop(
       R"(\b(?:did not|didn't|failed to|never|without)\s+(?:\w+\s+){0,3}?stop(?:ping)?\s+(?:at|for)\s+(?:the|a|its|his|her)\s+(?:[\w-]+\s+){0,2}?(?:stop sign|sign|stop line|red|signal|light|end|edge|mouth|exit|apron)\b)");
   if (Has(t, kSkippedStop)) e.skipped_stop = true;
@@ -164,7 +178,7 @@ void ReadMovement(const string& text, MovementEvidence& e) {
       R"(\b(?:entered|began to enter|started to enter|pulled (?:out|into|onto|away|forward|past|across)|(?:inched|crept|nosed|edged) (?:out|forward|into|onto)|went for it|proceeded (?:into|onto|to)|drove (?:into|onto|out)|accelerated (?:into|onto|across) (?:the|a) (?:intersection|junction|road|roadway|street|highway))\b(?!\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}?(?:center|centre|middle|turn|turning|left-turn|right-turn)\s+lane\b)|)"
       R"(\b(?:began|started|initiated|commenced) (?:the|its|his|her|a) (?:left |right )?turn\b|)"
       // "she accelerated into the turn".
-      R"(\b(?:accelerated|moved|went|eased|pulled|proceeded|started|began|drove)\s+(?:forward\s+|ahead\s+|out\s+)?into\s+(?:the|its|his|her|a)\s+(?:left\s+|right\s+)?turn\b(?![- ](?:lanes?|bays?|pocket|only)\b))");
+      R"(\b(?:accelerated|moved|went|eased|pulled|proceeded|started|began|drove|swung|swept|rolled)\s+(?:forward\s+|ahead\s+|out\s+)?into\s+(?:the|its|his|her|a)\s+(?:left\s+|right\s+)?turn\b(?![- ](?:lanes?|bays?|pocket|only)\b))");
   // A lane's name is not a manoeuvre: "in the two-way left turn lane".
   static const regex kTurnLane(
       R"(\b(?:(?:2[- ]way\s+)?(?:left|right)[- ]turn(?:[- ]only)?|turning)\s+(?:only\s+)?lanes?\b|\b(?:left|right)[- ]turn\s+(?:signal|blinker|indicator)s?\b)");
@@ -179,6 +193,11 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   if (smatch sm; std::regex_search(t, sm, kOwnSignal)) {
     ((sm[1].matched ? sm[1].str() : sm[2].str()) == "left" ? e.intent_left : e.intent_right) = true;
   }
+  // A vehicle in a turn lane ("was northbound in the left-turn lane") meant
+  // that turn (not in the centre lane both ways use).
+  static const regex kInTurnLane(
+      R"(\b(?:in|into|from|entered)\s+(?:the|a|an|its|his|her)\s+(?:(?:exclusive|dedicated|protected|\w+bound)\s+)?(left|right)[- ]turn(?:[- ]only)?\s+(?:lane|bay|pocket)\b)");
+  if (smatch tl; std::regex_search(t, tl, kInTurnLane)) (tl[1].str() == "left" ? e.intent_left : e.intent_right) = true;
   if (!intention) {
     if (Has(turns, kLeft)) e.turn_left = true;
     if (Has(turns, kRight)) e.turn_right = true;
@@ -250,14 +269,18 @@ void ReadMovement(const string& text, MovementEvidence& e) {
 // NHTSA critical-event wording ("this vehicle traveling, turning left at
 // intersection", "other motor vehicle in lane, other vehicle stopped").
 void ReadCoding(const string& t, MovementEvidence& self, MovementEvidence* other) {
-  static const regex kSelfLeft(R"(\bthis vehicle\b[^.]{0,40}?\bturning left)");
-  static const regex kSelfRight(R"(\bthis vehicle\b[^.]{0,40}?\bturning right)");
+  // (The coding may leave "this vehicle" out: "v1's critical precrash
+  // event was turning left at the intersection".)
+  static const string kSelf =
+      R"((?:\bthis vehicle\b[^.]{0,40}?|\bcritical (?:pre-?crash |precrash )?event\b[^.]{0,30}?\b(?:was|as)\s+(?:coded\s+)?(?:as\s+)?))";
+  static const regex kSelfLeft(kSelf + R"(\bturning left)");
+  static const regex kSelfRight(kSelf + R"(\bturning right)");
   static const regex kSelfStraight(
       R"(\bthis vehicle\b[^.]{0,40}?\b(?:crossing over|passing through|going straight|over the (?:left |right )?lane line|off the edge|control loss|traveling too fast|over the line)|)"
       // "... was when she began to travel over the lane line".
       R"(\bwhen (?:he|she|it|the (?:driver|vehicle)|v[1-9])\s+(?:(?:began|started) to (?:travel|drift|move|cross)|travell?ed|drifted|moved|crossed)\s+over the (?:left |right )?(?:lane|center|centre) ?line)");
-  static const regex kSelfBack(R"(\bthis vehicle\b[^.]{0,40}?\bbacking)");
-  static const regex kSelfLane(R"(\bthis vehicle\b[^.]{0,40}?\bchanging lanes)");
+  static const regex kSelfBack(kSelf + R"(\bbacking)");
+  static const regex kSelfLane(kSelf + R"(\bchanging lanes)");
   static const regex kOtherStopped(R"(\b(?:other|another) (?:motor )?vehicle\b[^.]{0,40}?\bstopped\b)");
   if (Has(t, kSelfLeft)) self.coded_turn_left = true;
   if (Has(t, kSelfRight)) self.coded_turn_right = true;
@@ -290,6 +313,12 @@ MovementDecision DecideMovement(const MovementEvidence& n, const MovementEvidenc
     return MovementDecision{path, Movement::kMerging, Provenance::kStated};
   }
   if (e.parked || n.parked) return both(Movement::kStopped, Provenance::kStated);
+  // Entering a parking position: grouped with leaving one, as a move into or
+  // out of the traffic lane.
+  if (n.entering_parking) {
+    const Movement path = n.back ? Movement::kBacking : n.turn_left ? Movement::kTurnLeft : n.turn_right ? Movement::kTurnRight : Movement::kStraight;
+    return MovementDecision{path, Movement::kMerging, Provenance::kStated};
+  }
   // A back out of a stall before a coded turn out of the lot is not the
   // pre-crash movement: the turn is.
   if ((e.back && !n.coded_turn_left && !n.coded_turn_right) || n.coded_back) {
@@ -576,6 +605,17 @@ void ReadVehicles(Reading& rd) {
         R"((?:^|[,;:]\s*|\b(?:and|then|when|as)\s+)both\s+(?=(?:then\s+)?(?:stopped|started|began|moved|pulled|proceeded|entered|slowed|braked|accelerated)\b)|)"
         // (Not what others did: "traffic ahead of both vehicles began to slow".)
         R"((?:^|\b(?!of\b)\w+\s+)both (?:vehicles|cars|units)\s+(?=(?:then\s+)?(?:(?:started|began)\s+(?:to\s+)?(?:move|moving|go|going|proceed\w*|accelerat\w*|forward|off)|moved|pulled|proceeded|accelerated)\b))");
+    // "the light turned green and the queue began to move": every vehicle
+    // stopped in it moved off.
+    static const regex kQueueMoved(
+        R"(\b(?:the\s+)?(?:queue|traffic|line of (?:traffic|vehicles|cars))\s+(?:\w+\s+){0,3}?(?:began|started)\s+(?:to\s+)?(?:move|moving|go|going|proceed\w*|pull\w*|roll\w*)\b)");
+    for (size_t i = 0; i < sentences.size() && i < impact; ++i) {
+      const Sentence& s = sentences[i];
+      if (s.kind != Kind::kNarrative || !s.refs.empty() || !Has(s.text, kQueueMoved)) continue;
+      for (size_t k = 1; k < narrative.size(); ++k) {
+        if (narrative[k].stopped) narrative[k].started = true;
+      }
+    }
     for (size_t i = 0; i < sentences.size() && i < impact; ++i) {
       const Sentence& s = sentences[i];
       smatch m;

@@ -108,6 +108,7 @@ string Detail(const AreaWords& a);
 
 struct MovementEvidence {
   bool stopped = false, stop_cancelled = false, parked = false, leaving_parking = false;
+  bool entering_parking = false;  // "began backing in" to a space, "was parallel parking"
   bool turn_left = false, turn_right = false, lane_change = false, merge = false, back = false, pass = false;
   bool slowing = false, straight = false;
   bool coded_turn_left = false, coded_turn_right = false, coded_straight = false, coded_back = false;
@@ -128,7 +129,7 @@ struct MovementEvidence {
   // A turn it meant, said by its signal or in words.
   bool meant_turn() const { return intent_left || intent_right || turn_meant; }
   bool any_narrative() const {
-    return stopped || stop_cancelled || parked || leaving_parking || turn_left || turn_right || lane_change || merge ||
+    return stopped || stop_cancelled || parked || leaving_parking || entering_parking || turn_left || turn_right || lane_change || merge ||
            back || pass || slowing || straight || in_curve;
   }
 };
