@@ -282,8 +282,10 @@ void ReadContact(Reading& rd) {
     smatch am;
     if (std::regex_search(s, am, kWithIts)) note(striker, am[1].str());
     if (std::regex_search(s, am, kStruckIn)) note(struck, am[1].str());
-    // "the front of v2 struck its left side".
-    static const regex kStruckIts(R"(\b(?:contacted|struck|impacted|hit|sideswiped|striking|hitting)\s+(?:its|their)\s+)" + kArea);
+    // "the front of v2 struck its left side", "v2 ran into its back end".
+    static const regex kStruckIts(
+        R"(\b(?:contacted|struck|impacted|hit|sideswiped|striking|hitting|(?:ran|run|running|crashed|slammed|smashed|plowed|rammed|bumped)\s+into)\s+(?:its|their)\s+)" +
+        kArea);
     if (!passive && std::regex_search(s, am, kStruckIts)) note(struck, am[1].str());
     // "the front of v1 struck the right side of the other vehicle": of two,
     // the other is the one struck.
@@ -459,7 +461,12 @@ void ClassifyCrash(Reading& rd) {
     // Front corners count as fronts here: investigators code "the front left
     // of v2 with its front left" as a head-on.
     // (So does a contact told as head-on: "where it struck v2 head-on".)
-    const bool front_to_front = (sa.front && (sb.front || !sb.any())) || Has(impact_text, HeadOnPhrase());
+    // (Or the report names the crash so: "this head-on crash occurred on a
+    // rural 2-lane state highway", though a spinning car took it in the side.)
+    static const regex kHeadOnCrashTold(
+        R"(\b(?:this|the|a)\s+(?:[\w-]+\s+){0,2}?head[- ]on\s+(?:crash|collision)\s+(?:occurred|happened|took place)\b)");
+    const bool front_to_front =
+        (sa.front && (sb.front || !sb.any())) || Has(impact_text, HeadOnPhrase()) || Has(scene, kHeadOnCrashTold);
     // Paths that cross: a junction, a vehicle running a sign or light, or one
     // pulling out of a drive.
     const bool crossing_paths = r.road.kind.value == RoadKind::kIntersection ||
@@ -472,13 +479,14 @@ void ClassifyCrash(Reading& rd) {
       type_src = Provenance::kStated;
     } else if (Has(impact_text, RearEndPhrase())) {
       type = CrashType::kRearEnd;
-    } else if (Has(impact_text, HeadOnPhrase())) {
+    } else if (Has(impact_text, HeadOnPhrase()) || (opposite && Has(scene, kHeadOnCrashTold))) {
       type = CrashType::kHeadOn;
     } else if (struck_plain_rear && sa.front && turner == b && turner_from_side) {
       // Struck in the back just after turning onto the striker's road from
       // a side road or drive: NASS codes the turn into its path (78/79).
       type = CrashType::kTurnIntoPath;
-    } else if (struck_plain_rear && sa.front && !opposite && !lane_change_at_impact) {
+    } else if (struck_plain_rear && (sa.front || !sa.any()) && !opposite && !lane_change_at_impact) {
+      // (A striker's part untold: "the car behind it ran into its back end".)
       type = CrashType::kRearEnd;
     } else if ((pulls_out_of_parking(a) || pulls_out_of_parking(b)) && !opposite) {
       type = CrashType::kTurnAcrossPath;  // NASS: leaving a parking position across a lane, initially the same way
@@ -587,7 +595,13 @@ void ClassifyCrash(Reading& rd) {
           !(told.coded_turn_left || told.coded_turn_right)) {
         continue;
       }
-      const bool wrong_lane = std::any_of(r.vehicles.begin(), r.vehicles.end(), [&](const VehicleRecord& o) {
+      // (A turn out of a driveway or lot is from no lane: "exited in one
+      // continuous sweeping right turn ..., heading east".)
+      const bool out_of_drive = std::any_of(segments.begin(), segments.end(), [&](const Segment& seg) {
+        return seg.vehicle == static_cast<int>(i) + 1 && !seg.perceived && seg.sentence <= rd.impact &&
+               sentences[seg.sentence].kind == Kind::kNarrative && LeavesDriveway(seg.text);
+      });
+      const bool wrong_lane = !out_of_drive && std::any_of(r.vehicles.begin(), r.vehicles.end(), [&](const VehicleRecord& o) {
         return &o != &v && o.travel.value && o.travel.value == v.travel.value && !o.parked.value;
       });
       if (road_curves || wrong_lane) v.pre_event.Set(Movement::kStraight, Provenance::kInferred);
@@ -695,12 +709,14 @@ void LocateCrash(Reading& rd) {
         // ramp, where the ramp forms a t-intersection with highway 20").
         // (Not a queue's aim: "stopped at the end of the queue, intending to
         // go straight across at the ramp terminal".)
-        R"(\b(?:occurred|happened|took place|collided|crashed)\s+(?:[^.;]{0,40}?\s)?at\s+the\s+(?:(?:[\w-]+\s+){0,2}?ramp\s+terminal|(?:terminal|terminus)\s+of\s+(?:the|an?)\s+(?:[\w-]+\s+){0,3}?ramp)\b|\bramp\s+(?:forms|creates|makes)\s+(?:a|an)\s+(?:[\w-]+\s+)?(?:intersection|junction)\b)");
+        R"(\b(?:occurred|happened|took place|collided|crashed)\s+(?:[^.;]{0,40}?\s)?at\s+the\s+(?:(?:[\w-]+\s+){0,2}?ramp\s+terminal|(?:terminal|terminus)\s+of\s+(?:the|an?)\s+(?:[\w-]+\s+){0,3}?(?:(?:off|on|exit|entrance)-)?ramp)\b|\bramp\s+(?:forms|creates|makes)\s+(?:a|an)\s+(?:[\w-]+\s+)?(?:intersection|junction)\b)");
     static const regex kAtIntersection(
         R"(\b(?:in|at|within|into|entered|entering|through|crossing|crossed|approaching|near|toward)\s+(?:the|an|a)\s+(?:\w+[- ]?){0,4}?(?:intersection|junction)\b|\bside (?:road|street)|\bcross street|\bintersection of\b|)"
         // A vehicle held by the signal ("stopped at a red arrow in the
         // left-turn lane") is in the junction's queue.
         R"(\b(?:stopped|waiting|stopping|sitting|queued)\s+(?:\w+\s+){0,2}?(?:at|for)\s+(?:a|an|the)\s+(?:steady\s+)?(?:red|yellow|amber)\s+(?:(?:left[- ]turn|right[- ]turn|turn)\s+)?(?:light|signal|arrow|indication|phase)\b|)"
+        // ("stopped in a queue about 20 m back from a red signal".)
+        R"(\b(?:stopped|waiting|queued)\s+in\s+(?:a|the)\s+queue\s+(?:[\w.]+\s+){0,3}?(?:back\s+from|short\s+of|behind)\s+(?:a|an|the)\s+(?:red\s+)?(?:light|signal|stop line|stop bar)\b|)"
         // So is a turn made at one ("turning left at a green light", "a left
         // turn on the green arrow", "turned right at the stop sign").
         R"(\b(?:turn\w*\s+(?:left|right)|(?:left|right)[- ]turn)\s+(?:at|on)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:light|signal|arrow|stop sign)\b|)" +

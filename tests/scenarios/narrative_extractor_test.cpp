@@ -4616,5 +4616,178 @@ TEST(NarrativeExtractorTest, TheLanesOfTheArterialAndTheLanesCrossedAreNotTheCro
   EXPECT_EQ(r.vehicles[1].travel.value, Compass::kSouth);
   EXPECT_EQ(r.crash.type.value, CrashType::kAngle);
 }
+TEST(NarrativeExtractorTest, AVehiclePlacedFromAnotherIsIntroducedInAShortDescription) {
+  // "the guy on my right", "the car behind it", "the car in the right lane".
+  const AccidentRecord a = kExtractor.Extract(
+      "We both stopped at the four-way stop. I got there first so I went straight through, but the guy on my right "
+      "pulled out at the same time and smashed into my passenger door.");
+  ASSERT_EQ(a.vehicles.size(), 2u);
+  EXPECT_EQ(a.crash.type.value, CrashType::kAngle);
+  EXPECT_EQ(a.crash.struck.value, "V1");
+  const AccidentRecord b = kExtractor.Extract(
+      "A school bus was slowing down to turn right into the school driveway when the car behind it ran into its back "
+      "end. Two-lane road, 35 mph limit.");
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.crash.type.value, CrashType::kRearEnd);
+  EXPECT_EQ(b.crash.struck_area.value, DamageArea::kRear);
+  const AccidentRecord c = kExtractor.Extract(
+      "Merging onto the freeway from the on-ramp, I got squeezed: the car in the right lane didn't move over, and the "
+      "left side of my car scraped along its right side.");
+  ASSERT_EQ(c.vehicles.size(), 2u);
+  EXPECT_EQ(c.vehicles[0].pre_event.value, Movement::kMerging);
+}
+TEST(NarrativeExtractorTest, ATextThatOpensOnTheBlueCarHasIntroducedIt) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The blue car stopped at the stop sign on Elm Street, then pulled out to turn left onto Highway 50 and got hit "
+      "in the driver's door by an eastbound semi in the right lane.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStopped);
+  EXPECT_EQ(r.vehicles[1].vehicle_class.value, VehicleClass::kTruck);
+  EXPECT_EQ(r.crash.struck.value, "V1");
+}
+TEST(NarrativeExtractorTest, ATurnOnAGreenWithoutStoppingIsATurnUnlessItSlowed) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was southbound intending to turn left. V2 was northbound. V1 had a green ball and, without stopping, "
+      "continued into its left turn. The front of V2 struck the right side of V1 in the intersection.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kTurnLeft);
+  const AccidentRecord s = kExtractor.Extract(
+      "V1 was southbound. V2 was northbound. V1 slowed in the turn lane and began its left turn on a circular green "
+      "without stopping. The front of V2 struck the right side of V1 in the intersection.");
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  EXPECT_EQ(s.vehicles[0].pre_event.value, Movement::kSlowing);
+}
+TEST(NarrativeExtractorTest, V1sRoadCountedInTheOtherVehiclesSentenceIsV1s) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V2, a 2002 Saturn SL1, was northbound on a two-lane residential street (speed limit 25 mph) and stopped for a "
+      "red signal at a four-way intersection with a four-lane undivided avenue, two lanes each way, posted 30 mph. "
+      "The driver then began a right turn on red. V1, a 2007 Hyundai Sonata, was eastbound in the curb lane of the "
+      "avenue on a green light. The front of V1 struck the left side of V2.");
+  EXPECT_EQ(r.road.lanes_total.value, 4);
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 30 * 0.44704, 0.01);
+}
+TEST(NarrativeExtractorTest, TheMakeBeforeAnUnnumberedModelYearNamesTheVehicle) {
+  // "the buick, a 1997 century": v1, called "the buick" after; its coded
+  // critical event without "this vehicle" is still its own.
+  const AccidentRecord r = kExtractor.Extract(
+      "The Buick, a 1997 Century, was eastbound in the curb lane and slowed to make a left. The Chevrolet, a 2005 "
+      "Malibu, was eastbound in the inside lane behind and to the left of the Buick. As the Buick angled left across "
+      "the inside lane, the front of the Malibu struck the left side of the Buick in the intersection. The Buick's "
+      "critical precrash event was turning left at the intersection.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_EQ(r.crash.struck.value, "V1");
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+}
+TEST(NarrativeExtractorTest, WordsThatOnlyLookLikeAStopOrAPersonLeaveTheMovement) {
+  // Vans neighbours say park at a corner are not the vehicle parked.
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle #2 was southbound, stopped at the stop sign, and turned left to go east. Vehicle #1 was westbound on "
+      "the through street. The front of vehicle #1 struck the left side of vehicle #2. The driver of vehicle #1 said "
+      "he braked. Neighbors said vans parked at that corner are a recurring complaint.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  // A hospital's road is a road, not a sentence about people.
+  const AccidentRecord h = kExtractor.Extract(
+      "Vehicle one was southbound and stopped in the left-turn lane waiting for a gap to turn east into the hospital "
+      "road. Vehicle two was northbound in the through lane. Vehicle one began its turn and the front of vehicle one "
+      "struck the left side of vehicle two.");
+  ASSERT_EQ(h.vehicles.size(), 2u);
+  EXPECT_EQ(h.vehicles[0].pre_event.value, Movement::kStopped);
+  // Nor is a vehicle's driver told by age and trade.
+  const AccidentRecord d = kExtractor.Extract(
+      "Vehicle 1, a 1995 Ford Crown Victoria driven by a 67-year-old retired farmer, was westbound and stopped to "
+      "turn left. Vehicle 2 was westbound behind it and struck the rear of Vehicle 1.");
+  ASSERT_EQ(d.vehicles.size(), 2u);
+  EXPECT_EQ(d.vehicles[0].travel.value, Compass::kWest);
+  EXPECT_EQ(d.vehicles[0].pre_event.value, Movement::kStopped);
+}
+TEST(NarrativeExtractorTest, AnOffRampTerminalIsAJunction) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred at the terminal of a freeway off-ramp, where the one-way ramp ends in a T with a two-lane "
+      "state route. V1 exited the freeway and stopped at the end of the ramp to turn left. V2 was southbound on the "
+      "state route with its right turn signal on; its driver meant to turn into a gas station beyond the ramp. V1 "
+      "pulled out and the front of V2 struck the left side of V1.");
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+}
+TEST(NarrativeExtractorTest, AReportThatCallsTheCrashHeadOnIsHeadOn) {
+  const AccidentRecord r = kExtractor.Extract(
+      "This head-on crash occurred on a rural two-lane highway. V2 was southbound and its rear slid out in the curve; "
+      "it rotated across the center line into the northbound lane. V1 was northbound. The front of V1 struck the "
+      "right side of V2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.crash.type.value, CrashType::kHeadOn);
+}
+TEST(NarrativeExtractorTest, AListOfVehiclesAllBrakingAreEachSlowing) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Vehicle 4, Vehicle 3, and Vehicle 2 were eastbound in lane three in that order, all braking. Vehicle 1 was "
+      "following in lane three and the front of V1 struck the rear of V2. V2 was driven into the rear of V3, and V3 "
+      "into the rear of V4.");
+  ASSERT_EQ(r.vehicles.size(), 4u);
+  EXPECT_EQ(r.vehicles[2].pre_event.value, Movement::kSlowing);
+  EXPECT_EQ(r.vehicles[3].pre_event.value, Movement::kSlowing);
+}
+TEST(NarrativeExtractorTest, ManoeuvresTheRulesNowRead) {
+  // Along a short acceleration lane: a merge.
+  const AccidentRecord m = kExtractor.Extract(
+      "Vehicle 1 came down the entrance ramp and accelerated along the short acceleration lane. Vehicle 2 was "
+      "eastbound in lane one. As Vehicle 1 moved left into lane one, its left side contacted the right side of "
+      "Vehicle 2.");
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  EXPECT_EQ(m.vehicles[0].pre_event.value, Movement::kMerging);
+  EXPECT_EQ(m.crash.type.value, CrashType::kTurnIntoPath);
+  // A contractor's trailer parked by the drive is not the backing vehicle parked.
+  const AccidentRecord b = kExtractor.Extract(
+      "V1 was backing out of a residential driveway. A contractor's trailer parked at the curb blocked the view. V2 "
+      "was eastbound and struck the left side of V1 with its front.");
+  ASSERT_EQ(b.vehicles.size(), 2u);
+  EXPECT_EQ(b.vehicles[0].pre_event.value, Movement::kBacking);
+  // A vehicle in the left-turn lane that swung into its turn turned left.
+  const AccidentRecord t = kExtractor.Extract(
+      "V1 was northbound in the left-turn lane. Its driver said the green arrow was lit, so she kept moving and swung "
+      "into her turn toward the west leg. V2 was southbound and ran the red light. The front of V2 struck the right "
+      "side of V1.");
+  ASSERT_EQ(t.vehicles.size(), 2u);
+  EXPECT_EQ(t.vehicles[0].movement.value, Movement::kTurnLeft);
+  // Backing into a parking space is entering a parking position.
+  const AccidentRecord p = kExtractor.Extract(
+      "V2 pulled up beside an open space, stopped, shifted into reverse and began backing in. V1 had stopped behind "
+      "her. The rear bumper of V2 struck the front of V1.");
+  ASSERT_EQ(p.vehicles.size(), 2u);
+  EXPECT_EQ(p.vehicles[1].movement.value, Movement::kBacking);
+  EXPECT_EQ(p.vehicles[1].pre_event.value, Movement::kMerging);
+  // A turn out of a drive is the turner's own, though it ends up going the other's way.
+  const AccidentRecord d = kExtractor.Extract(
+      "V2 left a gas station and exited in one continuous sweeping right turn, heading east. V1 was eastbound in "
+      "lane one. The front of V1 struck the left side of V2. V2's critical precrash event was coded as this vehicle "
+      "traveling, turning right.");
+  ASSERT_EQ(d.vehicles.size(), 2u);
+  EXPECT_EQ(d.vehicles[1].pre_event.value, Movement::kTurnRight);
+}
+TEST(NarrativeExtractorTest, AQueueThatMovedOffTookItsStoppedVehiclesWithIt) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V2 and V1 were stopped in a queue about 20 m back from a red signal, in the right eastbound lane. The light "
+      "turned green and the queue began to move. V2 pulled away slowly. The front of V1 ran into the rear of V2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+}
+TEST(NarrativeExtractorTest, ANoncontactVehicleInAnUnnumberedReportIsNotAParticipant) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The case vehicle was northbound on a two-lane rural road. A dark pickup pulled out of a farm driveway ahead "
+      "of it. The driver braked and steered right, the car slid, and its front struck a wooden fence. The pickup "
+      "did not stop. No critical reason was coded to the case vehicle, since the non-contact pickup's entry was the "
+      "cause.");
+  EXPECT_EQ(r.participant_count.value, 1);
+  EXPECT_EQ(r.crash.type.value, CrashType::kSingleVehicle);
+}
+TEST(NarrativeExtractorTest, OneSidesCountAfterAColonIsPerDirection) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Interstate, eastbound side: two lanes, separated from the westbound lanes by a wide grass median, posted 70 "
+      "mph. V1 was eastbound in lane one. V2 was in the left lane and moved right; the right side of V2 struck the "
+      "left side of V1.");
+  EXPECT_EQ(r.road.lanes_per_direction.value, 2);
+}
 }  // namespace
 }  // namespace accsim
