@@ -422,6 +422,11 @@ void ClassifyCrash(Reading& rd) {
     static const regex kOnto(R"(\bonto\b)");
     static const regex kOncoming(
         R"(\b(?:the other way|the opposite way|oncoming|(?:from|in) the opposite direction|opposing (?:traffic|direction))\b)");
+    // A turner held by a stop sign, the other not coming the other way,
+    // turns in from the side road ("was stopped at the stop sign on
+    // millbrook rd ..., waiting to turn left").
+    static const regex kAtStopSign(
+        R"(\b(?:stopped|waiting|sitting|stopping)\s+(?:\w+\s+){0,2}?(?:at|for)\s+(?:the|a|its)\s+stop\s+(?:sign|line|bar)\b)");
     bool turner_from_side = false;
     if (turner) {
       const VehicleRecord* other = turner == a ? b : a;
@@ -445,7 +450,7 @@ void ClassifyCrash(Reading& rd) {
       const size_t ti = static_cast<size_t>(turner->id[1] - '0');
       for (const Segment& seg : segments) {
         if (seg.vehicle == static_cast<int>(ti) && seg.sentence <= impact && sentences[seg.sentence].kind != Kind::kCoding &&
-            (Has(seg.text, kFromSide) || (!other_oncoming && !same && Has(seg.text, kOnto)))) {
+            (Has(seg.text, kFromSide) || (!other_oncoming && !same && (Has(seg.text, kOnto) || Has(seg.text, kAtStopSign))))) {
           turner_from_side = true;
         }
       }

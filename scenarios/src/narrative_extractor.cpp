@@ -87,6 +87,7 @@ void ReadDescriptions(Reading& rd) {
                                               "gray", "grey", "gold", "maroon", "tan", "4-door", "2-door", "door",
                                               "unknown", "type", "model", "make", "with", "and", "sedan"};
     std::map<string, std::set<int>> owners;
+    std::set<int> pickups;
     for (const auto& [v, d] : descriptions) {
       std::vector<string> words;
       size_t i = 0;
@@ -123,8 +124,13 @@ void ReadDescriptions(Reading& rd) {
         }
       }
       static const std::array<const char*, 7> kClassWord = {"car", "suv", "pickup", "van", "truck", "bus", "motorcycle"};
-      owners[kClassWord[static_cast<size_t>(ClassOf(d + " " + (bodies.count(v) ? bodies[v] : "")))]].insert(v);
+      const size_t cls = static_cast<size_t>(ClassOf(d + " " + (bodies.count(v) ? bodies[v] : "")));
+      owners[kClassWord[cls]].insert(v);
+      if (string(kClassWord[cls]) == "pickup") pickups.insert(v);
     }
+    // A pickup is "the truck" in its other driver's words ("the truck just
+    // turned right in front of me"), unless a truck took part.
+    if (!owners.count("truck")) owners["truck"] = pickups;
     // "v2, a 2001 international 9200 tractor pulling a loaded van
     // semitrailer": "the semitrailer", "the trailer" are v2's.
     static const regex kTowedLoad(
@@ -423,7 +429,10 @@ void SplitSegments(Reading& rd) {
   // "behind v2, a jetta, which was stopped", and appositives "v2, a parked
   // and unoccupied ciera": both describe that vehicle.
   static const regex kRelativeAfter(
-      R"(^(?:,?\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|is|had|has)\b|^,\s*an?\s)");
+      R"(^(?:,?\s*(?:an?\s+)?[^,]{0,50},)?\s*(?:which|that|who)\s+(?:was|were|is|had|has)\b|^,\s*an?\s|)"
+      // Police style: "across the path of v2 (1997 jeep cherokee), southbound
+      // on route 9", "struck the front of v3 (1995 buick), stopped at the sign".
+      R"(^\s*\([^)]{0,60}\)\s*,\s*(?:(?:north|south|east|west)bound|stopped|parked|waiting|stationary|slowing|traveling|travelling|heading|going)\b)");
   // What a driver saw another vehicle do ("she saw v1 waiting to turn") is
   // about that vehicle, but the sentence stays the observer's.
   static const regex kPerceivedBefore(

@@ -53,9 +53,13 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   // Nor a sign's words: "lane ends merge left" signs are posted.
   static const regex kSignWords(
       R"("[^"]{1,40}"\s+(?:warning\s+)?signs?\b|\bsigns?\s+(?:reading|that read|which read|saying|stating)\s+"[^"]{1,40}")");
+  // A habit given up is no stop: "he had recently stopped taking his
+  // medication".
+  static const regex kCeased(
+      R"(\b(?:stopped|stop|stopping|quit)\s+(?:taking|using|drinking|smoking|wearing|attending|seeing|working|sleeping|eating)\b)");
   string t = std::regex_replace(text, kOtherInFront, " ");
   for (const regex* not_its_own : {&kBeliefOfOther, &kQuotedOther, &kDoneToSpeaker, &kPerceivedOther, &kOtherWhenDriver,
-                                   &kSignWords}) {
+                                   &kSignWords, &kCeased}) {
     t = std::regex_replace(t, *not_its_own, " ");
   }
   static const regex kStopState(
@@ -257,10 +261,14 @@ void ReadMovement(const string& text, MovementEvidence& e) {
   if (Has(std::regex_replace(t, kSlowForConditions, " "), kSlow) && !Has(t, kSlowThenGo)) e.slowing = true;
   if (Has(t, kStraight)) e.straight = true;
   static const regex kStarted(
-      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating|across|through|off)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b)");
+      R"(\b(?:began|started)\s+(?:moving|to move|rolling|to roll|forward|to go|to proceed|proceeding|to accelerate|accelerating|across|through|off)\b|\bpulled away\b|\bmoved (?:forward|off)\b|\baccelerated\b|)"
+      // "both vehicles started from their stop signs".
+      R"(\b(?:started|moved off|took off|set off|pulled out)\s+from\s+(?:a|the|their|its|his|her)\s+(?:complete\s+|full\s+)?(?:stop|stops|stop signs?|stop lines?|stopped positions?)\b)");
   if (Has(t, kStarted)) e.started = true;
   static const regex kOnGreen(
-      R"(\b(?:when|once|after|as soon as|as)\s+(?:the\s+)?(?:traffic\s+)?(?:light|signal)\s+(?:for\s+[\w ]{1,30}?\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b)");
+      R"(\b(?:when|once|after|as soon as|as)\s+(?:the\s+)?(?:traffic\s+)?(?:light|signal)\s+(?:for\s+[\w ]{1,30}?\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b|)"
+      // "v2's signal turned green and v2 proceeded into the intersection".
+      R"(\b(?:light|signal)\s+(?:turned|changed|went|cycled)\s+(?:to\s+)?green\s*,?\s*(?:and|then|and then)\s+(?:[\w']+\s+){0,2}?(?:proceeded|pulled|started|began|moved|accelerated|entered|went|drove)\b)");
   if (Has(t, kOnGreen)) e.green_start = true;
   static const regex kUTurn(R"(\bu-?\s?turn)");
   if (!intention && Has(t, kUTurn)) e.u_turn = true;

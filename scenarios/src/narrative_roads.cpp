@@ -73,7 +73,9 @@ std::optional<int> AxisIn(const string& s) {
   static const regex kAxis(
       R"(\b(east|west)[- ]?(?:/|-|and)?\s*(?:west|east)\b|\b(north|south)[- ]?(?:/|-|and)?\s*(?:south|north)\b|\b(north|south|east|west)[- ]?bound\b|\b(n|s)/(?:s|n)\b|\b(e|w)/(?:w|e)\b|)"
       // "entering from the east is a two-lane residential street".
-      R"(\b(?:enter\w*|com(?:es|ing)|came|join\w*|approach\w*|r[ua]ns?|leads?|led|extends?|branch\w*)\s+(?:in\s+)?from\s+the\s+(north|south|east|west)\b)");
+      R"(\b(?:enter\w*|com(?:es|ing)|came|join\w*|approach\w*|r[ua]ns?|leads?|led|extends?|branch\w*)\s+(?:in\s+)?from\s+the\s+(north|south|east|west)\b|)"
+      // "the west leg was a two-lane roadway": a leg runs to its side.
+      R"(\b(north|south|east|west)(?:ern)?\s+(?:leg|approach)\b)");
   std::optional<int> last;
   for (auto it = std::sregex_iterator(s.begin(), s.end(), kAxis); it != std::sregex_iterator(); ++it) {
     const smatch& m = *it;
@@ -81,6 +83,7 @@ std::optional<int> AxisIn(const string& s) {
     else if (m[2].matched || m[4].matched) last = 1;
     else if (m[3].matched) last = (m[3].str()[0] == 'e' || m[3].str()[0] == 'w') ? 0 : 1;
     else if (m[6].matched) last = (m[6].str()[0] == 'e' || m[6].str()[0] == 'w') ? 0 : 1;
+    else if (m[7].matched) last = (m[7].str()[0] == 'e' || m[7].str()[0] == 'w') ? 0 : 1;
   }
   return last;
 }
@@ -1368,6 +1371,15 @@ void ReadLanes(Reading& rd, const RoadContext& ctx) {
   const V1Lanes choice = ChooseV1Statement(rd, ctx, roads);
   CountLanes(rd, ctx, roads, choice);
   ReadDivision(rd, ctx, roads, choice.best);
+  // "lane two of a three-lane, divided ... interstate": an odd count on a
+  // divided road with no side told is one side's.
+  RoadRecord& road = rd.r.road;
+  if (road.divided.value && !road.one_way.value && road.lanes_total.source == Provenance::kStated &&
+      road.lanes_per_direction.source == Provenance::kInferred && road.lanes_total.value >= 3 &&
+      road.lanes_total.value % 2 == 1 && road.kind.value != RoadKind::kRamp && !(choice.best && choice.best->ramp)) {
+    road.lanes_per_direction.Set(road.lanes_total.value, Provenance::kStated);
+    road.lanes_total.Set(2 * road.lanes_total.value, Provenance::kInferred);
+  }
   DrivewayLanes(rd, choice.best);
 }
 
@@ -1450,8 +1462,16 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
   for (const Sentence& s : sentences) {
     if (s.kind == Kind::kCoding || s.kind == Kind::kPeople) continue;
     const size_t index = static_cast<size_t>(&s - sentences.data());
+    // Police shorthand lists a road's limit after its lanes, with no limit
+    // word: "on millbrook rd (2 lanes, 25 mph)", "grand ave was 4 lanes
+    // undivided, 35 mph", "both streets 30 mph".
+    static const string kRoadListTail =
+        R"((?:(?:\b\d\s*lanes?|\bundivided|\bdivided|\b2-way|\boneway)(?:\s+(?:undivided|divided|each\s+way|(?:in\s+)?each\s+direction|total|2-way|oneway))?\s*[,:;]\s*|\bboth\s+(?:streets|roads|roadways)\s+))";
+    static const regex kRoadListValue(kRoadListTail + R"(\d{2,3}\s*(?:kmh|mph)\b)");
+    static const regex kRoadListBefore(kRoadListTail + "$");
+    const bool road_list = Has(s.text, kRoadListValue);
     const bool tells_limit = s.text.find("limit") != string::npos || s.text.find("posted") != string::npos ||
-                             s.text.find(" zone") != string::npos;
+                             s.text.find(" zone") != string::npos || road_list;
     // The latest such sentence that tells a limit ("the weather was normal"
     // tells none).
     if (tells_limit && Has(s.text, kUsual)) usual = std::make_pair(limits.size(), index);
@@ -1496,7 +1516,8 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
       if (before.find("limit") == string::npos && before.find("posted") == string::npos &&
           before.find("speed zone") == string::npos && near_tail.find("limit") == string::npos &&
           near_tail.find("posted") == string::npos && tail.rfind(" zone", 0) != 0 &&
-          tail.rfind(" speed zone", 0) != 0) {  // "a 45 mph zone", "a 25 mph speed zone"
+          tail.rfind(" speed zone", 0) != 0 &&  // "a 45 mph zone", "a 25 mph speed zone"
+          !Has(Before(s.text, pos, 40), kRoadListBefore)) {
         continue;
       }
       // After a limit, a vehicle's speed told in the same sentence is not
@@ -1556,7 +1577,12 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
           R"((?:\s*,\s*[^,.;()]{1,30}?){0,2}?(?:\s*,\s*|\s+)(?:that was |which was |was |is )?(?:posted|signed|zoned)\s+(?:(?:at|for)\s+)?$)");
       smatch rn;
       const string just_before = Before(s.text, pos, 40), further_before = Before(s.text, pos, 80);
-      const string road = std::regex_search(tail, rn, kOnRoadNounAfter)          ? rn[1].str()
+      // (In brackets after a road: "an east-west, 4-lane undivided arterial
+      // (2 lanes each way, 35 mph/56 kmh)".)
+      static const regex kInRoadsBracket(R"(\b)" + RoadNoun() + R"(\s*\([^()]*$)");
+      const string bracket_before = Before(s.text, pos, 60);
+      const string road = std::regex_search(bracket_before, rn, kInRoadsBracket) ? rn[1].str()
+                          : std::regex_search(tail, rn, kOnRoadNounAfter)          ? rn[1].str()
                           : std::regex_search(just_before, rn, kOnRoadNounBefore) ? rn[1].str()
                           : std::regex_search(further_before, rn, kRoadPostedAt) && !GenericRoad(rn[1].str()) ? rn[1].str()
                                                                                   : ClauseRoad(s.text, pos);
@@ -1653,7 +1679,12 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
                    l.axis ? *l.axis : -1, l.road.c_str(), l.name.c_str());
     }
   }
-  const Limit* pick = first_limit([](const Limit& l) { return l.owner == 1; });
+  // (Not one V1's sentence tells of the road it meets: "stopped at its
+  // intersection with an east-west arterial (2 lanes each way, 35 mph)".)
+  const Limit* pick = first_limit([&](const Limit& l) {
+    const bool other_road = ctx.distinctive && !l.road.empty() && !GenericRoad(l.road) && !SameRoad(l.road, ctx.v1_road);
+    return l.owner == 1 && !other_road;
+  });
   // V1 on the ramp: the limit said of the ramp ("the ramp is posted at 56
   // kmh (35 mph)"), not the road it leads to.
   if (!pick && ctx.v1_on_ramp) {
@@ -1686,6 +1717,8 @@ void ReadSpeedLimit(Reading& rd, const RoadContext& ctx) {
   // A limit said of a road across V1's course is the other road's.
   if (!pick && ctx.v1_axis >= 0) pick = first_limit([](const Limit& l) { return l.owner <= 1 && !l.axis; });
   if (!pick) pick = first_limit([](const Limit& l) { return l.owner <= 1; });
+  // (Every limit told in the other vehicle's sentences: the one on V1's axis.)
+  if (!pick && ctx.v1_axis >= 0) pick = first_limit([&](const Limit& l) { return l.axis && *l.axis == ctx.v1_axis; });
   if (!pick && !limits.empty()) pick = &limits.front();
   if (pick) {
     r.road.speed_limit_mps.Set(pick->mps, Provenance::kStated);

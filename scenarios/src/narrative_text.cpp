@@ -100,6 +100,27 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
   static const regex kLimitSynonym(
       R"(\b(?:maximum|max\.?)\s+(?:legal\s+|allowed\s+|allowable\s+|permitted\s+|posted\s+)?speed(?:\s+(?:allowed|permitted|limit))?\b|\b(?:legal|lawful)\s+speed(?:\s+limit)?\b)");
   s = std::regex_replace(s, kLimitSynonym, "speed limit");
+  // Police shorthand for sides and roads: "struck the l side", "turn l",
+  // "w/ r signal on", "the lf corner", "w/o", "t-int", "sr 14", "ped".
+  static const regex kWithout(R"(\bw/o\b\s*)");
+  s = std::regex_replace(s, kWithout, "without ");
+  static const regex kWith(R"(\bw/\s*)");
+  s = std::regex_replace(s, kWith, "with ");
+  static const regex kTurnSide(R"(\b(turn(?:ed|ing|s)?)\s+([lr])\b(?!-))");
+  s = ReplaceWith(s, kTurnSide, [](const smatch& m) { return m[1].str() + (m[2].str() == "l" ? " left" : " right"); });
+  static const regex kSideWord(
+      R"(\b([lr])\s+(?=(?:side|front|rear|door|quarter|fender|lane|turn|signal|blinker|corner|mirror|shoulder|curve)\b))");
+  s = ReplaceWith(s, kSideWord, [](const smatch& m) { return string(m[1].str() == "l" ? "left " : "right "); });
+  static const regex kCorner(R"(\b(the|its|his|her|their)\s+([lr])/?([fr])\b)");
+  s = ReplaceWith(s, kCorner, [](const smatch& m) {
+    return m[1].str() + (m[2].str() == "l" ? " left" : " right") + (m[3].str() == "f" ? " front" : " rear");
+  });
+  static const regex kTInt(R"(\bt-int\b\.?)");
+  s = std::regex_replace(s, kTInt, "t-intersection");
+  static const regex kRoutes(R"(\b(?:sr|rte|rt)\s*(?=\d))");
+  s = std::regex_replace(s, kRoutes, "route ");
+  static const regex kPed(R"(\bped\b\.?)");
+  s = std::regex_replace(s, kPed, "pedestrian");
   // Police abbreviations ("nb on elm st", "a 4 ln rdwy") and the present
   // tense police narratives are often in ("v1 is traveling north ... v2 has
   // been stopped ... the front of v1 strikes": the rules read the
@@ -183,7 +204,7 @@ string Normalise(std::string_view in, bool* numbered_by_report) {
     return out + " and v" + m[3].str();
   });
   // Police shorthand: "u2" (unit 2) and "d1" (driver 1), only as whole words.
-  static const regex kShortRef(R"(\b[ud]([1-9])\b)" + kNotAUnit);
+  static const regex kShortRef(R"(\b[ud]-?([1-9])\b)" + kNotAUnit);
   s = std::regex_replace(s, kShortRef, "v$1");
   // "the v1 driver told the investigator": the driver of v1.
   static const regex kNumberedDriver(R"(\bthe\s+v([1-9])\s+(driver|operator)\b)");
@@ -842,6 +863,9 @@ std::optional<Compass> DirectionIn(const string& s) {
     const size_t at = static_cast<size_t>(m.position());
     if (m[2].matched && Has(Before(s, at, 50) + m[0].str(), kIntended)) continue;
     if (m[1].matched && (Has(s.substr(at, 40), kOthersTraffic) || Has(Before(s, at, 40), kWaitedFor))) continue;
+    // "waiting to turn left to go westbound": where the turn would take it.
+    static const regex kToGo(R"(\b(?:to\s+(?:go|travel|head|proceed|continue)|turn(?:ing|ed|s)?\s+(?:left|right)(?:\s+to\s+go)?)\s+$)");
+    if (m[1].matched && Has(Before(s, at, 40), kToGo)) continue;
     // "pulled out into the westbound lane to pass": the lane it moved into,
     // the other direction's.
     // (Also "eased across the stopped eastbound lanes", "had crossed the

@@ -4789,5 +4789,101 @@ TEST(NarrativeExtractorTest, OneSidesCountAfterAColonIsPerDirection) {
       "left side of V1.");
   EXPECT_EQ(r.road.lanes_per_direction.value, 2);
 }
+TEST(NarrativeExtractorTest, APickupIsTheTruckInTheOtherDriversWordsUnlessATruckTookPart) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1, a 2004 Honda Civic, was traveling north. V2, a 1993 Ford F-250 pickup, was traveling south and had "
+      "stopped waiting to turn left into a farm lane. V2 began its left turn and the front of V1 struck the right "
+      "side of V2. The driver of V1 stated that the truck 'just turned right in front of me'.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnAcrossPath);
+  // With a dump truck in the crash, "the truck" stays the dump truck's.
+  const AccidentRecord s = kExtractor.Extract(
+      "Traffic had stopped. V2, a 2005 Chevrolet Colorado pickup, was stopped first in line. V1, a 2001 "
+      "International 4900 dump truck, approached. The front of the truck struck the rear of V2.");
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  EXPECT_EQ(s.crash.striking.value, "V1");
+  EXPECT_EQ(s.crash.type.value, CrashType::kRearEnd);
+}
+TEST(NarrativeExtractorTest, AHabitGivenUpIsNoStop) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling east. V2 was traveling west. V1 drifted across the centerline and its front struck the "
+      "front of V2. His family stated he had recently stopped taking his medication.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[0].pre_event.value, Movement::kStraight);
+}
+TEST(NarrativeExtractorTest, ALegOfTheJunctionRunsToItsSide) {
+  const AccidentRecord r = kExtractor.Extract(
+      "The crash occurred at a T-intersection. The north/south roadway was a four-lane, two-way undivided roadway "
+      "with a posted speed limit of 40 MPH. The west leg was a two-lane, two-way roadway with a posted speed limit "
+      "of 30 MPH. V1 was traveling eastbound on the west leg and turned right. V2 was southbound. The front of V2 "
+      "struck the left side of V1.");
+  EXPECT_EQ(r.road.lanes_total.value, 2);
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 30 * 0.44704, 1e-6);
+}
+TEST(NarrativeExtractorTest, ASignalTurningGreenAndTheVehicleGoingIsAStart) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V2 was stopped northbound at the red signal intending to turn left. V1 was traveling eastbound. V2's signal "
+      "turned green and V2 proceeded into the intersection and began to turn left. V1 entered against the red and "
+      "the front of V1 struck the left side of V2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.vehicles[1].pre_event.value, Movement::kStraight);  // NASS "starting in traffic lane"
+  const AccidentRecord s = kExtractor.Extract(
+      "V1 was traveling east and stopped at the stop sign intending to turn left. V2 was traveling west and stopped "
+      "at the stop sign intending to go straight. Both vehicles started from their stop signs at about the same "
+      "time. V1 turned left and the front of V2 struck the right front of V1.");
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  EXPECT_EQ(s.vehicles[1].pre_event.value, Movement::kStraight);
+}
+TEST(NarrativeExtractorTest, AnOddLaneCountOnADividedRoadIsOneSides) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was traveling northbound in lane two of a three-lane, divided, dry concrete interstate highway. A concrete "
+      "median barrier separated the northbound and southbound lanes. V2 was northbound in lane one. V1 changed "
+      "lanes to the right and its right side contacted the left side of V2.");
+  EXPECT_TRUE(r.road.divided.value);
+  EXPECT_EQ(r.road.lanes_per_direction.value, 3);
+}
+TEST(NarrativeExtractorTest, PoliceShorthandForSidesRoutesAndDriversIsRead) {
+  const AccidentRecord r = kExtractor.Extract(
+      "Veh 1 (2001 Ford Taurus) was stopped at the stop sign on Millbrook Rd (2 lanes, 25 mph) at the T-int with "
+      "SR 14, waiting to turn L to go WB. Veh 2 (2004 Chevrolet Trailblazer) was EB on SR 14 (2 lanes, 45 mph, no "
+      "control) when Veh 1 pulled out, and the front of Veh 2 struck the L side of Veh 1. D-1 stated he looked "
+      "but never saw Veh 2.");
+  ASSERT_EQ(r.vehicles.size(), 2u);
+  EXPECT_EQ(r.road.kind.value, RoadKind::kTJunction);
+  EXPECT_EQ(r.crash.location.value, CrashLocation::kJunction);
+  EXPECT_EQ(r.crash.struck_area.value, DamageArea::kLeft);
+  EXPECT_EQ(r.vehicles[0].movement.value, Movement::kTurnLeft);
+  EXPECT_FALSE(r.vehicles[0].travel.value.has_value());  // westbound is where the turn would take it
+  EXPECT_EQ(r.crash.type.value, CrashType::kTurnIntoPath);  // from the side road, held by its stop sign
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 25 * 0.44704, 1e-6);
+  const AccidentRecord s = kExtractor.Extract(
+      "V1 (2004 Toyota Camry) NB on Rte 9 slowed and turned L onto Hollis Ln across the path of V2 (1997 Jeep "
+      "Cherokee), SB on Rte 9. V2 braked hard and its front struck the R side of V1. Rte 9 2 lanes, 45 mph.");
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  EXPECT_EQ(s.vehicles[1].travel.value, Compass::kSouth);
+  EXPECT_EQ(s.crash.type.value, CrashType::kTurnAcrossPath);
+  EXPECT_EQ(s.crash.struck_area.value, DamageArea::kRight);
+  const AccidentRecord t = kExtractor.Extract(
+      "Unit 1 (2000 Honda Accord) was SB in lane 1 of Walnut St, a 2-lane one-way, when unit 2, WB on Church St "
+      "(2-way, 2 lanes), failed to stop for the stop sign and entered the intersection. The front of unit 1 struck "
+      "the R side of unit 2. Both streets 30 mph; night, clear, dry.");
+  EXPECT_NEAR(t.road.speed_limit_mps.value, 30 * 0.44704, 1e-6);
+}
+TEST(NarrativeExtractorTest, ALimitInBracketsAfterTheRoadV1MeetsIsThatRoads) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was southbound on a two-lane side street and stopped at a stop sign at its intersection with an "
+      "east-west, four-lane undivided arterial (two lanes each way, 35 mph/56 km/h). The side street is posted 25 "
+      "mph. V1 pulled out to turn left. V2 was westbound and struck the left side of V1 with its front.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 25 * 0.44704, 1e-6);
+  EXPECT_EQ(r.road.speed_limit_unit.value, "mph");
+}
+TEST(NarrativeExtractorTest, AVehiclesSpeedInItsLaneIsNoLimit) {
+  const AccidentRecord r = kExtractor.Extract(
+      "V1 was northbound on a 4-lane undivided road posted at 35 mph. V2 was ahead of V1. The driver of V2 stated "
+      "she was going straight in the right lane at about 20 mph and braked when the light changed. The front of V1 "
+      "struck the back of V2.");
+  EXPECT_NEAR(r.road.speed_limit_mps.value, 35 * 0.44704, 1e-6);
+}
 }  // namespace
 }  // namespace accsim
